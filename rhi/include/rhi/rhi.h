@@ -1,0 +1,15 @@
+#pragma once
+// Umbrella header of the caustics render-hardware interface.
+#include "rhi/accel_struct.h"
+#include "rhi/binding.h"
+#include "rhi/command_list.h"
+#include "rhi/device.h"
+#include "rhi/format.h"
+#include "rhi/log.h"
+#include "rhi/pipeline.h"
+#include "rhi/resource_state.h"
+#include "rhi/resources.h"
+#include "rhi/result.h"
+#include "rhi/shader.h"
+#include "rhi/shader_table_layout.h"
+#include "rhi/state_object.h"
