@@ -1,0 +1,154 @@
+#include "cli_options.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace caustics::sample {
+namespace {
+
+// Limits that keep a run finite and the GPU allocations sane; beyond them the option is refused.
+constexpr uint32_t kMaxImageSide = 16384;
+constexpr uint32_t kMaxMapResolution = 8192;
+constexpr uint32_t kMaxSpecularDepth = 31;    // Vulkan guarantees maxRayRecursionDepth >= 1 only; we loop, but bound it
+constexpr float kMaxRaysPerTexel = 256.0f;
+constexpr uint32_t kMaxFrames = 100000;
+
+Result<uint32_t> parseUint(const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
+    uint32_t value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size())
+        return makeError(option + ": '" + text + "' is not a whole number");
+    if (value < lo || value > hi)
+        return makeError(option + ": " + text + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return value;
+}
+
+Result<float> parseFloat(const std::string& option, const std::string& text, float lo, float hi) {
+    char* end = nullptr;
+    float value = std::strtof(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+        return makeError(option + ": '" + text + "' is not a number");
+    if (value < lo || value > hi) {
+        std::ostringstream s;
+        s << option << ": " << text << " is outside [" << lo << ", " << hi << "]";
+        return makeError(s.str());
+    }
+    return value;
+}
+
+// "ex,ey,ez,tx,ty,tz,fov" (fov in degrees).
+Result<CameraOverride> parseCamera(const std::string& text) {
+    std::vector<float> values;
+    std::stringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, ',')) {
+        auto v = parseFloat("--camera", part, -1e6f, 1e6f);
+        if (!v) return v.error();
+        values.push_back(*v);
+    }
+    if (values.size() != 7)
+        return makeError("--camera: expected 7 comma-separated numbers eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_degrees");
+    CameraOverride camera;
+    camera.eye = {values[0], values[1], values[2]};
+    camera.target = {values[3], values[4], values[5]};
+    camera.verticalFovDegrees = values[6];
+    if (!(camera.verticalFovDegrees > 1.0f && camera.verticalFovDegrees < 179.0f))
+        return makeError("--camera: the field of view must be within (1, 179) degrees");
+    if (glm::length(camera.target - camera.eye) < 1e-6f) return makeError("--camera: eye and target coincide");
+    return camera;
+}
+
+Result<Aov> parseAov(const std::string& text) {
+    for (Aov aov : {Aov::Final, Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Direct, Aov::Caustics})
+        if (text == aovName(aov)) return aov;
+    return makeError("--aov: '" + text + "' is not one of final, albedo, normal, depth, direct, caustics");
+}
+
+}  // namespace
+
+const char* aovName(Aov aov) {
+    switch (aov) {
+        case Aov::Final: return "final";
+        case Aov::Albedo: return "albedo";
+        case Aov::Normal: return "normal";
+        case Aov::Depth: return "depth";
+        case Aov::Direct: return "direct";
+        case Aov::Caustics: return "caustics";
+    }
+    return "?";
+}
+
+const char* cliUsage() {
+    return "usage: caustics-sponza [options]\n"
+           "  --scene PATH|builtin|builtin:atrium   scene to render (glTF .gltf/.glb or a built-in one)\n"
+           "  --sponza PATH           modified Sponza: load PATH and add the caustic objects to its atrium\n"
+           "  --backend vulkan|d3d12  RHI backend (default vulkan)\n"
+           "  --width N --height N    image size (default 512x384)\n"
+           "  --camera ex,ey,ez,tx,ty,tz,fov   eye, target and vertical field of view in degrees\n"
+           "  --out FILE.png|FILE.exr output image (EXR keeps linear radiance)\n"
+           "  --aov final|albedo|normal|depth|direct|caustics\n"
+           "  --frames N              frames to render (temporal filter accumulates)\n"
+           "  --graph-dot FILE        write the render graph as Graphviz dot\n"
+           "  --map-resolution N      caustic visibility map size (default 512)\n"
+           "  --rays-per-texel X      rays per map texel, fractional allowed (default 1)\n"
+           "  --max-depth N           max specular events per caustic path (default 4)\n"
+           "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
+           "  --no-second-type        skip caustics seen through glass (the backward sphere pass)\n"
+           "  --exposure X            linear exposure before tone mapping (default 1)\n"
+           "  --reference             also render the CPU reference light tracer (to FILE.reference.exr)\n"
+           "  --reference-photons N   photons per light for --reference\n"
+           "  --validation            enable Vulkan validation layers\n"
+           "  --window                interactive window (GLFW)\n";
+}
+
+Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
+    CliOptions o;
+    for (size_t i = 1; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto next = [&]() -> Result<std::string> {
+            if (i + 1 >= args.size()) return makeError(a + ": missing value");
+            return args[++i];
+        };
+#define CLI_VALUE(var)              \
+    auto var##Result = next();      \
+    if (!var##Result) return var##Result.error(); \
+    const std::string& var = *var##Result
+        if (a == "--help" || a == "-h") { o.help = true; continue; }
+        if (a == "--window") { o.window = true; continue; }
+        if (a == "--no-filter") { o.filter = false; continue; }
+        if (a == "--no-second-type") { o.secondType = false; continue; }
+        if (a == "--reference") { o.reference = true; continue; }
+        if (a == "--validation") { o.validation = true; continue; }
+        CLI_VALUE(value);
+        if (a == "--scene") o.scene = value;
+        else if (a == "--sponza") o.sponzaPath = value;
+        else if (a == "--backend") {
+            if (value != "vulkan" && value != "d3d12") return makeError("--backend: '" + value + "' is not vulkan or d3d12");
+            o.backend = value;
+        } else if (a == "--out") o.outPath = value;
+        else if (a == "--graph-dot") o.graphDotPath = value;
+        else if (a == "--aov") { CAUSTICS_TRY(o.aov, parseAov(value)); }
+        else if (a == "--camera") { CAUSTICS_TRY(o.camera, parseCamera(value)); }
+        else if (a == "--width") { CAUSTICS_TRY(o.width, parseUint(a, value, 1, kMaxImageSide)); }
+        else if (a == "--height") { CAUSTICS_TRY(o.height, parseUint(a, value, 1, kMaxImageSide)); }
+        else if (a == "--frames") { CAUSTICS_TRY(o.frames, parseUint(a, value, 1, kMaxFrames)); }
+        else if (a == "--map-resolution") { CAUSTICS_TRY(o.mapResolution, parseUint(a, value, 1, kMaxMapResolution)); }
+        else if (a == "--max-depth") { CAUSTICS_TRY(o.maxDepth, parseUint(a, value, 1, kMaxSpecularDepth)); }
+        else if (a == "--rays-per-texel") {
+            CAUSTICS_TRY(o.raysPerTexel, parseFloat(a, value, 0.0f, kMaxRaysPerTexel));
+            if (o.raysPerTexel <= 0.0f) return makeError("--rays-per-texel: must be greater than 0 (got " + value + ")");
+        } else if (a == "--exposure") { CAUSTICS_TRY(o.exposure, parseFloat(a, value, 1e-6f, 1e6f)); }
+        else if (a == "--reference-photons") { CAUSTICS_TRY(o.referencePhotons, parseUint(a, value, 1, 1'000'000'000u)); }
+        else return makeError("unknown option '" + a + "' (see --help)");
+#undef CLI_VALUE
+    }
+    if (!o.outPath.empty()) {
+        auto dot = o.outPath.rfind('.');
+        std::string ext = dot == std::string::npos ? "" : o.outPath.substr(dot);
+        if (ext != ".png" && ext != ".exr") return makeError("--out: '" + o.outPath + "' must end in .png or .exr");
+    }
+    return o;
+}
+
+}  // namespace caustics::sample

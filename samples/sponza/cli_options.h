@@ -1,0 +1,52 @@
+#pragma once
+// Command-line options of the Sponza sample (headless and windowed). Parsing never exits or throws:
+// a bad option yields an error naming the option and the accepted range.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "rhi/result.h"
+
+namespace caustics::sample {
+
+enum class Aov { Final, Albedo, Normal, Depth, Direct, Caustics };
+
+struct CameraOverride {
+    glm::vec3 eye{0.0f};
+    glm::vec3 target{0.0f};
+    float verticalFovDegrees = 45.0f;
+};
+
+struct CliOptions {
+    std::string scene = "builtin";        // glTF path, "builtin", "builtin:table" or "builtin:atrium"
+    std::string sponzaPath;               // modified Sponza: a glTF to which the caustic objects are added
+    std::string backend = "vulkan";
+    uint32_t width = 512;
+    uint32_t height = 384;
+    std::optional<CameraOverride> camera;
+    std::string outPath;                  // .png or .exr; empty in windowed mode = none
+    Aov aov = Aov::Final;
+    uint32_t frames = 1;
+    std::string graphDotPath;
+    bool window = false;
+    bool reference = false;               // also render the CPU reference light tracer
+    uint32_t referencePhotons = 2'000'000;
+    // Caustic settings (see CausticsSettings for meaning and defaults).
+    uint32_t mapResolution = 512;
+    float raysPerTexel = 1.0f;
+    uint32_t maxDepth = 4;
+    bool filter = true;
+    bool secondType = true;
+    float exposure = 1.0f;
+    bool validation = false;
+    bool help = false;
+};
+
+// argv[0] is skipped.
+Result<CliOptions> parseCliOptions(const std::vector<std::string>& args);
+const char* cliUsage();
+const char* aovName(Aov aov);
+
+}  // namespace caustics::sample
