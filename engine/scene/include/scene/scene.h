@@ -85,6 +85,9 @@ struct Camera {
 struct Scene {
     std::string name;
     bool isStandIn = false;            // a generated stand-in for a real asset (say so in outputs)
+    // Added by the scene helper: linear multiplier on radiance before tone mapping that the scene's
+    // author chose so that the image is well exposed (built-in scenes set it; glTF files keep 1).
+    float exposure = 1.0f;
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<Texture> textures;

@@ -1,0 +1,32 @@
+#pragma once
+// The scene flattened to world space for the reference tracer: one triangle list with per-vertex
+// shading normals and a material per triangle, plus the BVH over it.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "reference/bvh.h"
+#include "scene/scene.h"
+
+namespace caustics::reference {
+
+struct Sphere {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+struct WorldScene {
+    std::vector<Triangle> triangles;
+    std::vector<glm::vec3> normals;      // 3 per triangle (unit, world space)
+    std::vector<uint32_t> materials;     // per triangle
+    std::unique_ptr<TriangleBvh> bvh;
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
+    glm::vec3 specularMin{0.0f}, specularMax{0.0f};
+    bool hasSpecular = false;
+};
+
+WorldScene buildWorldScene(const scene::Scene& scene);
+
+Sphere boundingSphere(const glm::vec3& min, const glm::vec3& max);
+
+}  // namespace caustics::reference

@@ -1,0 +1,29 @@
+#pragma once
+// Per-pass GPU time as the median over the last N frames (median, not mean: one frame stalled by the
+// OS or a shader compile should not move the number).
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace caustics::rg {
+
+class PassTimings {
+public:
+    explicit PassTimings(uint32_t window = 32) : window_(window ? window : 1) {}
+
+    void setWindow(uint32_t frames);
+    uint32_t window() const { return window_; }
+    void add(const std::string& pass, double milliseconds);
+    std::optional<double> medianMs(std::string_view pass) const;
+    uint32_t sampleCount(std::string_view pass) const;
+    void clear() { samples_.clear(); }
+
+private:
+    uint32_t window_;
+    std::map<std::string, std::deque<double>, std::less<>> samples_;
+};
+
+}  // namespace caustics::rg

@@ -1,0 +1,20 @@
+#pragma once
+// Steps of compileGraph() shared between its source files.
+#include "render_graph/compiled_plan.h"
+
+namespace caustics::rg::detail {
+
+// The combined state of all accesses of one resource within one pass.
+struct PassUse {
+    uint32_t resource = kInvalidIndex;
+    rhi::ResourceState state = rhi::ResourceState::Undefined;
+    bool writes = false;
+};
+
+// Groups a pass's accesses by resource; fails when one pass needs two incompatible states.
+Result<std::vector<PassUse>> passUses(const GraphDesc& graph, uint32_t pass);
+
+// Fills plan.order[*].barriers and plan.finalBarriers (plan.order and lifetimes already set).
+Status planBarriers(const GraphDesc& graph, CompiledPlan& plan);
+
+}  // namespace caustics::rg::detail

@@ -1,0 +1,34 @@
+#include "render_graph/pass_timings.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace caustics::rg {
+
+void PassTimings::setWindow(uint32_t frames) {
+    window_ = frames ? frames : 1;
+    for (auto& [name, samples] : samples_)
+        while (samples.size() > window_) samples.pop_front();
+}
+
+void PassTimings::add(const std::string& pass, double milliseconds) {
+    auto& samples = samples_[pass];
+    samples.push_back(milliseconds);
+    while (samples.size() > window_) samples.pop_front();
+}
+
+std::optional<double> PassTimings::medianMs(std::string_view pass) const {
+    auto it = samples_.find(pass);
+    if (it == samples_.end() || it->second.empty()) return std::nullopt;
+    std::vector<double> sorted(it->second.begin(), it->second.end());
+    std::sort(sorted.begin(), sorted.end());
+    size_t n = sorted.size();
+    return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+}
+
+uint32_t PassTimings::sampleCount(std::string_view pass) const {
+    auto it = samples_.find(pass);
+    return it == samples_.end() ? 0u : uint32_t(it->second.size());
+}
+
+}  // namespace caustics::rg

@@ -1,0 +1,65 @@
+#pragma once
+// Private to the scene library: tinygltf plus the checked accessor reader the importer uses.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <tiny_gltf.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+#include "rhi/result.h"
+
+namespace caustics::scene::gltf {
+
+// A validated view of an accessor's bytes: every element [0, count) lies inside its buffer.
+struct AccessorView {
+    const uint8_t* data = nullptr;
+    size_t stride = 0;
+    size_t count = 0;
+    int componentType = 0;
+    int components = 0;
+    bool normalized = false;
+};
+
+// Checks that accessor `index` exists, is dense, and fits its buffer view and buffer; `what`
+// names the use ("POSITION of mesh 0 primitive 1") in errors. `maxCount` guards memory.
+Result<AccessorView> viewAccessor(const tinygltf::Model& model, int index, const std::string& what,
+                                  uint64_t maxCount);
+
+// Element i, component c, converted to float (normalized integers per glTF 2.0 3.11).
+float readFloat(const AccessorView& view, size_t i, int c);
+uint32_t readIndex(const AccessorView& view, size_t i);
+
+const char* typeName(int tinygltfType);
+const char* componentTypeName(int componentType);
+
+// Safe JSON-value lookups (tinygltf::Value asserts on a wrong type).
+const tinygltf::Value* member(const tinygltf::Value& object, const char* key);
+float numberOr(const tinygltf::Value& object, const char* key, float fallback);
+glm::vec3 vec3Or(const tinygltf::Value& object, const char* key, const glm::vec3& fallback);
+int intOr(const tinygltf::Value& object, const char* key, int fallback);
+
+}  // namespace caustics::scene::gltf
+
+#include "scene/scene.h"
+
+namespace caustics::scene::gltf {
+
+// glTF material -> optical properties. `textureToImage` maps a glTF texture index to the image
+// (== Scene::textures) index, or -1. Warnings go to `warnings`.
+Material convertMaterial(const tinygltf::Material& material, const std::vector<int>& textureToImage,
+                         std::vector<std::string>& warnings);
+// KHR_lights_punctual light placed by a node's world transform (it shines along the node's -Z).
+bool convertLight(const tinygltf::Light& light, const glm::mat4& world, Light& out, std::string& problem);
+// Perspective camera looking down the node's -Z with +Y up.
+bool convertCamera(const tinygltf::Camera& camera, const glm::mat4& world, Camera& out, std::string& problem);
+
+}  // namespace caustics::scene::gltf

@@ -1,0 +1,55 @@
+#pragma once
+// Settings of the caustics module: a plain struct with documented defaults (the paper's section 4
+// defaults: 512x512 maps, 1 ray per texel, depth 4). validate() refuses absurd values with a message
+// naming the field and the accepted range; nothing is silently clamped.
+#include <cstdint>
+#include <string>
+
+#include "rhi/result.h"
+
+namespace caustics {
+
+// How big the integration sphere of a backward (second-type) hit is.
+enum class SphereRadiusPolicy : uint8_t {
+    // radius = scale * (world size of one camera pixel at the hit, following the path length through the
+    // specular chain): the gather footprint stays about `scale` pixels wide on screen. Default.
+    PixelFootprint,
+    // radius = worldRadius metres everywhere.
+    FixedWorld,
+};
+
+enum class CausticsAov : uint8_t {
+    Final,        // tone-mapped composite
+    Direct,       // direct lighting with ray-traced shadows (linear)
+    Caustics,     // caustic radiance of both types (linear), filtered if the filter is on
+    FirstType,    // first-type caustic radiance only (linear, unfiltered)
+    SecondType,   // second-type caustic radiance only (linear, unfiltered)
+    Albedo, Normal, Depth,
+};
+
+struct CausticsSettings {
+    uint32_t mapResolution = 512;       // caustic visibility map side, texels
+    float raysPerTexel = 1.0f;          // fractional: a stochastic subset of texels emits
+    uint32_t maxSpecularDepth = 4;      // specular events per caustic path
+    bool russianRoulette = true;        // after the second event, by path throughput
+    bool secondType = true;             // caustics seen through specular objects
+    SphereRadiusPolicy sphereRadiusPolicy = SphereRadiusPolicy::PixelFootprint;
+    float sphereRadiusScale = 2.0f;     // PixelFootprint: radius in camera pixels
+    float sphereWorldRadius = 0.01f;    // FixedWorld: metres
+    uint32_t maxStoredHits = 1u << 20;  // forward diffuse hits kept for the second-type gather
+    bool filter = true;                 // temporal + a-trous spatial filter (the paper measured with it off)
+    float temporalAlpha = 0.1f;         // weight of the new frame in the temporal accumulation
+    uint32_t atrousIterations = 3;
+    float exposure = 1.0f;
+    uint32_t seed = 1;
+
+    // Limits beyond which a setting is refused (not clamped).
+    static constexpr uint32_t kMaxMapResolution = 8192;
+    static constexpr float kMaxRaysPerTexel = 256.0f;
+    static constexpr uint32_t kMaxSpecularDepth = 31;
+    static constexpr uint32_t kMaxStoredHits = 1u << 26;
+
+    Status validate() const;
+};
+
+}  // namespace caustics

@@ -1,0 +1,37 @@
+#include "caustics/caustics_settings.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace caustics {
+namespace {
+template <typename T>
+Error outOfRange(const char* field, T value, T lo, T hi) {
+    std::ostringstream s;
+    s << "CausticsSettings::" << field << " = " << value << " is outside [" << lo << ", " << hi << "]";
+    return makeError(s.str());
+}
+}  // namespace
+
+Status CausticsSettings::validate() const {
+    if (mapResolution < 1 || mapResolution > kMaxMapResolution)
+        return outOfRange("mapResolution", mapResolution, 1u, kMaxMapResolution);
+    if (!std::isfinite(raysPerTexel) || raysPerTexel <= 0.0f || raysPerTexel > kMaxRaysPerTexel)
+        return makeError("CausticsSettings::raysPerTexel = " + std::to_string(raysPerTexel) +
+                         " must be greater than 0 and at most " + std::to_string(kMaxRaysPerTexel));
+    if (maxSpecularDepth < 1 || maxSpecularDepth > kMaxSpecularDepth)
+        return outOfRange("maxSpecularDepth", maxSpecularDepth, 1u, kMaxSpecularDepth);
+    if (maxStoredHits < 1 || maxStoredHits > kMaxStoredHits)
+        return outOfRange("maxStoredHits", maxStoredHits, 1u, kMaxStoredHits);
+    if (!std::isfinite(sphereRadiusScale) || sphereRadiusScale <= 0.0f || sphereRadiusScale > 64.0f)
+        return outOfRange("sphereRadiusScale", sphereRadiusScale, 1e-6f, 64.0f);
+    if (!std::isfinite(sphereWorldRadius) || sphereWorldRadius <= 0.0f || sphereWorldRadius > 1e3f)
+        return outOfRange("sphereWorldRadius", sphereWorldRadius, 1e-6f, 1e3f);
+    if (!std::isfinite(temporalAlpha) || temporalAlpha <= 0.0f || temporalAlpha > 1.0f)
+        return outOfRange("temporalAlpha", temporalAlpha, 1e-6f, 1.0f);
+    if (atrousIterations > 8) return outOfRange("atrousIterations", atrousIterations, 0u, 8u);
+    if (!std::isfinite(exposure) || exposure <= 0.0f) return makeError("CausticsSettings::exposure must be > 0");
+    return okStatus();
+}
+
+}  // namespace caustics

@@ -1,0 +1,132 @@
+#pragma once
+// The backend's implementations of the RHI object interfaces: plain holders of D3D12 objects.
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "d3d12_headers.h"
+#include "descriptor_heaps.h"
+#include "root_signature_layout.h"
+#include "rhi/rhi.h"
+#include "shader_table_image.h"
+
+namespace caustics::rhi::d3d12 {
+
+class Buffer final : public IBuffer {
+public:
+    BufferDesc desc_;
+    ComPtr<ID3D12Resource> resource;
+    void* mapped = nullptr;
+    D3D12_RESOURCE_STATES state = D3D12_RESOURCE_STATE_COMMON;   // last state a barrier left it in
+    const BufferDesc& desc() const override { return desc_; }
+    uint64_t deviceAddress() const override { return resource ? resource->GetGPUVirtualAddress() : 0; }
+    void* mappedData() override { return mapped; }
+};
+
+class Texture final : public ITexture {
+public:
+    TextureDesc desc_;
+    ComPtr<ID3D12Resource> resource;
+    D3D12_RESOURCE_STATES state = D3D12_RESOURCE_STATE_COMMON;
+    const TextureDesc& desc() const override { return desc_; }
+};
+
+class Sampler final : public ISampler {
+public:
+    SamplerDesc desc_;
+    const SamplerDesc& desc() const override { return desc_; }
+};
+
+class Heap final : public IHeap {
+public:
+    HeapDesc desc_;
+    ComPtr<ID3D12Heap> heap;
+    const HeapDesc& desc() const override { return desc_; }
+};
+
+class BindingLayout final : public IBindingLayout {
+public:
+    BindingLayoutDesc desc_;
+    DescriptorTableLayout table;
+    const BindingLayoutDesc& desc() const override { return desc_; }
+};
+
+class BindingSet final : public IBindingSet {
+public:
+    ~BindingSet() override;
+    BindingSetDesc desc_;
+    BindingLayoutHandle layout_;
+    CpuDescriptorHeap* resourceHeap = nullptr;
+    CpuDescriptorHeap* samplerHeap = nullptr;
+    DescriptorRange resources, samplers;   // staging ranges, copied to the ring at bind time
+    const BindingSetDesc& desc() const override { return desc_; }
+    const BindingLayoutHandle& layout() const override { return layout_; }
+};
+
+// What every pipeline kind shares: a root signature and where its parameters are.
+struct RootBinding {
+    ComPtr<ID3D12RootSignature> rootSignature;
+    RootSignatureLayout layout;
+};
+
+class ComputePipeline final : public IComputePipeline {
+public:
+    ComputePipelineDesc desc_;
+    RootBinding root;
+    ComPtr<ID3D12PipelineState> pso;
+    const ComputePipelineDesc& desc() const override { return desc_; }
+};
+
+class AccelStruct final : public IAccelStruct {
+public:
+    AccelStructDesc desc_;
+    ComPtr<ID3D12Resource> storage;    // in RAYTRACING_ACCELERATION_STRUCTURE for its whole life
+    ComPtr<ID3D12Resource> scratch;    // sized for max(build, update)
+    ComPtr<ID3D12Resource> instances;  // top level: upload buffer for host instances
+    void* instancesMapped = nullptr;
+    uint64_t storageSize = 0;
+    const AccelStructDesc& desc() const override { return desc_; }
+    uint64_t deviceAddress() const override { return storage ? storage->GetGPUVirtualAddress() : 0; }
+    uint64_t storageBytes() const override { return storageSize; }
+};
+
+class StateObject final : public IStateObject {
+public:
+    StateObjectDesc desc_;
+    RootBinding root;
+    ComPtr<ID3D12RootSignature> localRootSignature;
+    ComPtr<ID3D12StateObject> stateObject;
+    std::unordered_map<std::string, std::vector<uint8_t>> identifiers;
+    const StateObjectDesc& desc() const override { return desc_; }
+    std::vector<uint8_t> shaderIdentifier(const std::string& exportName) const override {
+        auto it = identifiers.find(exportName);
+        return it == identifiers.end() ? std::vector<uint8_t>{} : it->second;
+    }
+};
+
+class ShaderTable final : public IShaderTable {
+public:
+    ShaderTableDesc desc_;
+    ShaderTableLayout layout;
+    ComPtr<ID3D12Resource> buffer;   // upload heap, GENERIC_READ
+    const ShaderTableDesc& desc() const override { return desc_; }
+};
+
+class TimestampPool final : public ITimestampPool {
+public:
+    ComPtr<ID3D12QueryHeap> heap;
+    ComPtr<ID3D12Resource> readback;   // resolved ticks
+    void* mapped = nullptr;
+    uint32_t count = 0;
+    std::vector<uint8_t> written;      // resolved at least once since reset
+    uint32_t capacity() const override { return count; }
+};
+
+// Creates a committed buffer (helper shared by several files).
+Result<ComPtr<ID3D12Resource>> createCommittedBuffer(ID3D12Device* device, uint64_t bytes, D3D12_HEAP_TYPE heap,
+                                                     D3D12_RESOURCE_FLAGS flags, D3D12_RESOURCE_STATES state,
+                                                     const std::string& name);
+void setDebugName(ID3D12Object* object, const std::string& name);
+
+}  // namespace caustics::rhi::d3d12

@@ -1,0 +1,21 @@
+#pragma once
+// ResourceState -> Vulkan synchronization2 terms. Device-free (only Vulkan types), unit-tested in
+// tests/unit/rhi/resource_state_vk_test.cpp.
+#include <vulkan/vulkan.h>
+
+#include "rhi/resource_state.h"
+
+namespace caustics::rhi::vulkan {
+
+struct VkStateInfo {
+    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_NONE;
+    VkAccessFlags2 access = VK_ACCESS_2_NONE;
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;   // meaningful for textures only
+};
+
+// Combined states (several bits) OR their stages and access; the layout is the one of the most
+// specific bit (e.g. DepthRead|ShaderResource -> DEPTH_STENCIL_READ_ONLY_OPTIMAL). `isDepth` selects
+// depth layouts for ShaderResource on depth textures.
+VkStateInfo translateState(ResourceState state, bool isDepth = false);
+
+}  // namespace caustics::rhi::vulkan

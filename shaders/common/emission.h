@@ -1,0 +1,71 @@
+#ifndef CAUSTICS_COMMON_EMISSION_H
+#define CAUSTICS_COMMON_EMISSION_H
+// How a light's flux is shared among the texels of its caustic visibility map (DESIGN.md pass 3).
+// Perspective maps (point, spot): texel (i, j) of an N x N map with half-angle tangent t covers the
+// rectangle [x0, x1] x [y0, y1] of the plane z = 1 in the light's frame, x_k = t (2k/N - 1). Its
+// solid angle is exact (docs/physics.md, "Texel solid angle"); a photon through it carries
+//   Phi = I * falloff * Omega_texel / raysPerTexel        [lm = cd * sr]
+// Orthographic maps (directional): a texel is a square of area A on the plane normal to the light,
+//   Phi = E * A_texel / raysPerTexel                       [lm = lx * m^2]
+#include "common/lang.h"
+
+CAUSTICS_SHARED_BEGIN
+
+// Solid angle of the rectangle [0, x] x [0, y] of the plane z = 1 seen from the origin
+// (signed in x and y): atan(x y / sqrt(1 + x^2 + y^2)).
+CAUSTICS_FN float planeRectCornerSolidAngle(float x, float y) {
+    return atan(x * y / sqrt(1.0f + x * x + y * y));
+}
+
+CAUSTICS_FN float planeRectSolidAngle(float x0, float y0, float x1, float y1) {
+    return planeRectCornerSolidAngle(x1, y1) - planeRectCornerSolidAngle(x0, y1) -
+           planeRectCornerSolidAngle(x1, y0) + planeRectCornerSolidAngle(x0, y0);
+}
+
+// Point on the plane z = 1 for continuous texel coordinates (0..N across the map).
+CAUSTICS_FN float2 perspectiveMapPlanePoint(float2 texelCoord, float mapSize, float tanHalfAngle) {
+    return tanHalfAngle * (2.0f * texelCoord / mapSize - splat2(1.0f));
+}
+
+CAUSTICS_FN float perspectiveTexelSolidAngle(uint2 texel, float mapSize, float tanHalfAngle) {
+    float2 p0 = perspectiveMapPlanePoint(float2(float(texel.x), float(texel.y)), mapSize, tanHalfAngle);
+    float2 p1 = perspectiveMapPlanePoint(float2(float(texel.x + 1u), float(texel.y + 1u)), mapSize, tanHalfAngle);
+    return planeRectSolidAngle(p0.x, p0.y, p1.x, p1.y);
+}
+
+// Solid angle of the whole square frustum: 4 atan(t^2 / sqrt(1 + 2 t^2)); 4 pi / 6 for t = 1.
+CAUSTICS_FN float perspectiveFrustumSolidAngle(float tanHalfAngle) {
+    float t2 = tanHalfAngle * tanHalfAngle;
+    return 4.0f * atan(t2 / sqrt(1.0f + 2.0f * t2));
+}
+
+// Texel area of an N x N orthographic map covering [-halfExtent, halfExtent]^2.
+CAUSTICS_FN float orthographicTexelArea(float halfExtent, float mapSize) {
+    float side = 2.0f * halfExtent / mapSize;
+    return side * side;
+}
+
+// KHR_lights_punctual spot cone attenuation (the extension's recommended smooth falloff):
+// s = saturate((cos theta - cos outer) / (cos inner - cos outer)), attenuation = s^2.
+CAUSTICS_FN float spotAttenuation(float cosTheta, float cosInner, float cosOuter) {
+    float s = saturate((cosTheta - cosOuter) / max(cosInner - cosOuter, 1.0e-4f));
+    return s * s;
+}
+
+// Total flux of a spot light of intensity I with that falloff:
+// 2 pi I [ (1 - cos inner) + (cos inner - cos outer) / 3 ].
+CAUSTICS_FN float spotLightFlux(float intensity, float cosInner, float cosOuter) {
+    return kTwoPi * intensity * ((1.0f - cosInner) + (cosInner - cosOuter) / 3.0f);
+}
+
+CAUSTICS_FN float photonFluxPerspective(float intensity, float texelSolidAngle, float raysPerTexel) {
+    return intensity * texelSolidAngle / raysPerTexel;
+}
+
+CAUSTICS_FN float photonFluxOrthographic(float illuminance, float texelArea, float raysPerTexel) {
+    return illuminance * texelArea / raysPerTexel;
+}
+
+CAUSTICS_SHARED_END
+
+#endif  // CAUSTICS_COMMON_EMISSION_H

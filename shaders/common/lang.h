@@ -1,0 +1,106 @@
+#ifndef CAUSTICS_COMMON_LANG_H
+#define CAUSTICS_COMMON_LANG_H
+// Portability prelude: the headers in shaders/common are written once and compile as GLSL 4.60
+// (glslangValidator, #extension GL_GOOGLE_include_directive), as HLSL (DXC) and as C++20 with GLM.
+// Shared code is written in the HLSL spelling (float3, lerp, saturate, mul) with these rules:
+//  - float literals carry an `f` suffix (C++: a double would not mix with glm::vec3);
+//  - vector splats use splat2/splat3 (HLSL has no float3(x) constructor from one scalar);
+//  - functions are declared CAUSTICS_FN, out/inout parameters CAUSTICS_OUT(T)/CAUSTICS_INOUT(T),
+//    file-scope constants CAUSTICS_CONST;
+//  - no matrices in shared code (row/column conventions differ), no recursion, no pointers;
+//  - the C++ spelling lives in namespace caustics::shader (CAUSTICS_SHARED_BEGIN/END).
+// The HLSL branch is deliberately minimal: Debian 12 has no dxc, so it is not compiled in CI.
+
+#if defined(__cplusplus)
+#define CAUSTICS_LANG_CPP 1
+#elif defined(__HLSL_VERSION)
+#define CAUSTICS_LANG_HLSL 1
+#else
+#define CAUSTICS_LANG_GLSL 1
+#endif
+
+#if defined(CAUSTICS_LANG_CPP)
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#define CAUSTICS_SHARED_BEGIN namespace caustics::shader {
+#define CAUSTICS_SHARED_END }
+#define CAUSTICS_FN inline
+#define CAUSTICS_CONST inline constexpr
+#define CAUSTICS_OUT(T) T&
+#define CAUSTICS_INOUT(T) T&
+
+namespace caustics::shader {
+using float2 = glm::vec2;
+using float3 = glm::vec3;
+using float4 = glm::vec4;
+using uint = std::uint32_t;
+using uint2 = glm::uvec2;
+using int2 = glm::ivec2;
+
+using glm::abs;
+using glm::atan;
+using glm::clamp;
+using glm::cos;
+using glm::cross;
+using glm::dot;
+using glm::exp;
+using glm::floor;
+using glm::length;
+using glm::log;
+using glm::max;
+using glm::min;
+using glm::normalize;
+using glm::pow;
+using glm::reflect;
+using glm::sin;
+using glm::sqrt;
+using glm::tan;
+
+inline float atan2(float y, float x) { return glm::atan(y, x); }
+inline float saturate(float x) { return glm::clamp(x, 0.0f, 1.0f); }
+inline float3 saturate(float3 x) { return glm::clamp(x, 0.0f, 1.0f); }
+inline float lerp(float a, float b, float t) { return glm::mix(a, b, t); }
+inline float3 lerp(float3 a, float3 b, float t) { return glm::mix(a, b, t); }
+inline float2 splat2(float x) { return float2(x); }
+inline float3 splat3(float x) { return float3(x); }
+}  // namespace caustics::shader
+
+#elif defined(CAUSTICS_LANG_HLSL)
+#define CAUSTICS_SHARED_BEGIN
+#define CAUSTICS_SHARED_END
+#define CAUSTICS_FN
+#define CAUSTICS_CONST static const
+#define CAUSTICS_OUT(T) out T
+#define CAUSTICS_INOUT(T) inout T
+#define splat2(x) ((float2)(x))
+#define splat3(x) ((float3)(x))
+// lerp, saturate, mul, atan2 are HLSL intrinsics.
+
+#else  // GLSL
+#define CAUSTICS_SHARED_BEGIN
+#define CAUSTICS_SHARED_END
+#define CAUSTICS_FN
+#define CAUSTICS_CONST const
+#define CAUSTICS_OUT(T) out T
+#define CAUSTICS_INOUT(T) inout T
+#define float2 vec2
+#define float3 vec3
+#define float4 vec4
+#define uint2 uvec2
+#define int2 ivec2
+#define splat2(x) vec2(x)
+#define splat3(x) vec3(x)
+#define lerp(a, b, t) mix(a, b, t)
+#define saturate(x) clamp(x, 0.0f, 1.0f)
+#define mul(m, v) ((m) * (v))
+#define atan2(y, x) atan(y, x)
+#endif
+
+CAUSTICS_SHARED_BEGIN
+CAUSTICS_CONST float kPi = 3.14159265358979f;
+CAUSTICS_CONST float kTwoPi = 6.28318530717959f;
+CAUSTICS_CONST float kInvPi = 0.318309886183791f;
+CAUSTICS_SHARED_END
+
+#endif  // CAUSTICS_COMMON_LANG_H

@@ -1,0 +1,126 @@
+#ifndef CAUSTICS_COMMON_SPECULAR_EVENT_H
+#define CAUSTICS_COMMON_SPECULAR_EVENT_H
+// One scattering event at a specular surface, used by the forward (photon) and backward (camera)
+// tracers alike. Lobes follow glTF 2.0 metallic-roughness + KHR_materials_transmission/ior:
+//   metal      (probability metallic):      reflect, weight Schlick(F0 = baseColor)
+//   dielectric (probability 1 - metallic):  reflect with probability F (exact Fresnel), weight 1;
+//                                           else refract with probability transmission, weight
+//                                           baseColor; else the diffuse base layer (kind Diffuse:
+//                                           the caller ends the specular chain there).
+// Each lobe is picked with its physical probability, so Fresnel cancels out of the weights
+// (importance sampling). Rough surfaces sample a GGX microfacet normal first (Walter et al. 2007).
+#include "common/fresnel.h"
+#include "common/lang.h"
+#include "common/microfacet.h"
+#include "common/sampling.h"
+
+CAUSTICS_SHARED_BEGIN
+
+CAUSTICS_CONST uint kEventAbsorbed = 0u;
+CAUSTICS_CONST uint kEventReflect = 1u;
+CAUSTICS_CONST uint kEventRefract = 2u;
+CAUSTICS_CONST uint kEventDiffuse = 3u;
+
+// Photons carry flux (importance transport: no eta^2 factor, flux is conserved across an interface);
+// camera paths carry radiance, which scales by (etaI/etaT)^2 on refraction (Veach 1997, sec. 5.2;
+// PBRT 3e sec. 16.1.3).
+CAUSTICS_CONST uint kTransportImportance = 0u;
+CAUSTICS_CONST uint kTransportRadiance = 1u;
+
+struct OpticalMaterial {
+    float3 baseColor;
+    float metallic;
+    float roughness;
+    float transmission;
+    float ior;
+    bool thinWalled;  // KHR_materials_volume absent (thickness 0): transmission does not bend
+};
+
+struct SpecularEvent {
+    float3 direction;  // new unit propagation direction
+    float3 weight;     // multiply the path throughput by this
+    uint kind;         // kEvent*
+    bool insideMedium; // the new segment runs inside the object's volume
+};
+
+// d: unit propagation direction arriving at the surface; n: the surface's outward unit normal (the
+// side of the volume it bounds). dot(d, n) < 0 means the ray enters, > 0 that it leaves.
+// u: three uniform numbers in [0, 1).
+CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMaterial mat, float3 u, uint transportMode) {
+    SpecularEvent ev;
+    ev.direction = d;
+    ev.weight = splat3(0.0f);
+    ev.kind = kEventAbsorbed;
+    ev.insideMedium = false;
+
+    bool entering = dot(d, n) < 0.0f;
+    float3 nf = entering ? n : -n;  // faces the incoming ray
+    float etaI = entering ? 1.0f : mat.ior;
+    float etaT = entering ? mat.ior : 1.0f;
+    if (mat.thinWalled) {
+        etaI = 1.0f;
+        etaT = mat.ior;
+    }
+    float3 wo = -d;
+    float alpha = ggxAlpha(mat.roughness);
+    float3 m = nf;
+    if (alpha > kSmoothAlpha) {
+        m = onbToWorld(onbFromNormal(nf), ggxSampleNormal(float2(u.x, u.y), alpha));
+    }
+    float cosOm = dot(wo, m);
+    if (cosOm <= 0.0f) return ev;  // back-facing microfacet: zero contribution (Walter eq. 41)
+    float cosOn = dot(wo, nf);
+    float cosMn = dot(m, nf);
+
+    float pick = u.z;
+    float3 lobeWeight = splat3(1.0f);
+    bool doReflect = false;
+    if (pick < mat.metallic) {
+        doReflect = true;
+        lobeWeight = fresnelSchlick(mat.baseColor, cosOm);
+    } else {
+        pick = (pick - mat.metallic) / max(1.0f - mat.metallic, 1.0e-7f);
+        float f = fresnelDielectric(cosOm, etaT / etaI);
+        if (pick < f) {
+            doReflect = true;
+        } else {
+            pick = (pick - f) / max(1.0f - f, 1.0e-7f);
+            if (pick >= mat.transmission) {
+                ev.kind = kEventDiffuse;
+                ev.weight = splat3(1.0f);
+                ev.insideMedium = !entering && !mat.thinWalled;
+                return ev;
+            }
+        }
+    }
+
+    float3 wi;
+    if (doReflect) {
+        wi = reflect(d, m);
+        if (dot(wi, nf) <= 0.0f) return ev;
+        ev.kind = kEventReflect;
+        ev.insideMedium = !entering && !mat.thinWalled;
+    } else if (mat.thinWalled) {
+        // A thin wall is two parallel interfaces: the ray leaves along its incident direction.
+        wi = d;
+        ev.kind = kEventRefract;
+        ev.insideMedium = false;
+        lobeWeight = mat.baseColor;
+    } else {
+        if (!refractDirection(d, m, etaI / etaT, wi)) return ev;  // cannot happen: F = 1 under TIR
+        if (dot(wi, nf) >= 0.0f) return ev;
+        ev.kind = kEventRefract;
+        ev.insideMedium = entering;
+        lobeWeight = mat.baseColor;
+        if (transportMode == kTransportRadiance) lobeWeight = lobeWeight * ((etaI * etaI) / (etaT * etaT));
+    }
+    float micro = 1.0f;
+    if (alpha > kSmoothAlpha) micro = ggxSampleWeight(cosOn, dot(wi, nf), cosOm, dot(wi, m), cosMn, alpha);
+    ev.direction = wi;
+    ev.weight = lobeWeight * micro;
+    return ev;
+}
+
+CAUSTICS_SHARED_END
+
+#endif  // CAUSTICS_COMMON_SPECULAR_EVENT_H

@@ -1,0 +1,6 @@
+#version 460
+#extension GL_EXT_ray_tracing : require
+layout(shaderRecordEXT, std430) buffer HitRecord { uint value; };
+layout(location = 0) rayPayloadInEXT uint payload;
+
+void main() { payload = 2000u + value; }
