@@ -4,6 +4,7 @@
 // list, reset at begin) and points the root table at it (the "CPU staging + GPU ring" scheme of
 // MiniEngine's DynamicDescriptorHeap, simplified to whole-table copies).
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <vector>
 

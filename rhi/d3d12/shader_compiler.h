@@ -2,6 +2,7 @@
 // HLSL -> DXIL through dxcompiler, loaded at run time. The few DXC interfaces used are declared in
 // shader_compiler.cpp from the public dxcapi.h ABI (IDxcCompiler3::Compile, IDxcResult).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 

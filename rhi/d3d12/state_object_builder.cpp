@@ -5,7 +5,7 @@
 namespace caustics::rhi::d3d12 {
 namespace {
 
-Error soError(const StateObjectDesc& desc, const std::string& what) {
+caustics::Error soError(const StateObjectDesc& desc, const std::string& what) {
     return makeError("d3d12 state object '" + desc.debugName + "': " + what);
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "d3d12_headers.h"
+#include "rhi/result.h"
 #include "rhi/state_object.h"
 
 namespace caustics::rhi::d3d12 {

@@ -82,9 +82,9 @@ Result<VkImageView> VulkanTexture::makeView(VkImageViewType type, uint32_t baseL
     info.viewType = type;
     info.format = format_;
     // Sampling and attachments of a depth/stencil image use the depth aspect only.
-    VkImageAspectFlags aspect = aspect();
-    if (aspect & VK_IMAGE_ASPECT_DEPTH_BIT) aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-    info.subresourceRange = {aspect, baseMip, mips, baseLayer, layers};
+    VkImageAspectFlags viewAspect = aspect();
+    if (viewAspect & VK_IMAGE_ASPECT_DEPTH_BIT) viewAspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+    info.subresourceRange = {viewAspect, baseMip, mips, baseLayer, layers};
     VkImageView view = VK_NULL_HANDLE;
     VkResult r = vkCreateImageView(context_->device, &info, nullptr, &view);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateImageView", desc_.debugName);

@@ -27,10 +27,32 @@ CAUSTICS_FN float2 perspectiveMapPlanePoint(float2 texelCoord, float mapSize, fl
     return tanHalfAngle * (2.0f * texelCoord / mapSize - splat2(1.0f));
 }
 
+// Solid angle of the planar triangle (a, b, c) on z = 1 seen from the origin (Van Oosterom &
+// Strackee 1983): tan(Omega/2) = a.(b x c) / (|a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|). For points on
+// z = 1 the triple product equals twice the triangle's area in the plane, computed here from the
+// 2D edge vectors, which avoids the cancellation that makes the atan-difference form of
+// planeRectSolidAngle lose ~1% per texel in single precision for 512^2 maps.
+CAUSTICS_FN float planeTriangleSolidAngle(float2 p0, float2 p1, float2 p2) {
+    float3 a = float3(p0.x, p0.y, 1.0f);
+    float3 b = float3(p1.x, p1.y, 1.0f);
+    float3 c = float3(p2.x, p2.y, 1.0f);
+    float2 e1 = p1 - p0;
+    float2 e2 = p2 - p0;
+    float triple = abs(e1.x * e2.y - e1.y * e2.x);
+    float la = length(a);
+    float lb = length(b);
+    float lc = length(c);
+    float denom = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
+    return 2.0f * atan2(triple, denom);
+}
+
+// Exact solid angle of texel (x, y) of an N x N perspective map: two spherical triangles.
 CAUSTICS_FN float perspectiveTexelSolidAngle(uint2 texel, float mapSize, float tanHalfAngle) {
     float2 p0 = perspectiveMapPlanePoint(float2(float(texel.x), float(texel.y)), mapSize, tanHalfAngle);
     float2 p1 = perspectiveMapPlanePoint(float2(float(texel.x + 1u), float(texel.y + 1u)), mapSize, tanHalfAngle);
-    return planeRectSolidAngle(p0.x, p0.y, p1.x, p1.y);
+    float2 p10 = float2(p1.x, p0.y);
+    float2 p01 = float2(p0.x, p1.y);
+    return planeTriangleSolidAngle(p0, p10, p1) + planeTriangleSolidAngle(p0, p1, p01);
 }
 
 // Solid angle of the whole square frustum: 4 atan(t^2 / sqrt(1 + 2 t^2)); 4 pi / 6 for t = 1.

@@ -38,6 +38,10 @@ struct RenderGraph::ExecutionState {
     bool timestampsUnavailable = false;
     std::array<TimestampSlot, kTimestampSlots> slots;
     uint64_t frame = 0;
+
+    // Memory requirements per desc: asking the device may create a probe object, too slow per frame.
+    std::vector<std::pair<rhi::TextureDesc, rhi::MemoryRequirements>> textureSizes;
+    std::vector<std::pair<rhi::BufferDesc, rhi::MemoryRequirements>> bufferSizes;
 };
 
 bool sameTextureDesc(const rhi::TextureDesc& a, const rhi::TextureDesc& b);

@@ -10,6 +10,8 @@
 namespace caustics::rg {
 namespace {
 
+constexpr uint64_t kPlacementGranularity = 1024;
+
 std::string describe(const GraphDesc& g, uint32_t pass, uint32_t resource) {
     return "pass '" + g.passes[pass].name + "', " + resourceKindName(g.resources[resource].kind) + " '" +
            g.resources[resource].name + "'";
@@ -152,7 +154,12 @@ Result<CompiledPlan> compileGraph(const GraphDesc& g, const IMemorySizer& sizer)
             plan.bufferDescs[r].isVirtual = true;
             plan.memory[r] = sizer.requirements(plan.bufferDescs[r]);
         }
-        requests.push_back({plan.memory[r].size, std::max<uint64_t>(plan.memory[r].alignment, 1), life});
+        // Every placement starts on a kPlacementGranularity boundary, so two byte-disjoint resources
+        // never share a bufferImageGranularity page (Vulkan spec 11.7 "Resource Memory Association":
+        // linear and optimal resources alive together must not share a page; the limit is at most
+        // 1024 bytes on the hardware we target, 64 on lavapipe).
+        uint64_t alignment = std::max<uint64_t>(plan.memory[r].alignment, kPlacementGranularity);
+        requests.push_back({plan.memory[r].size, alignment, life});
         requestResource.push_back(r);
     }
     AliasPlacement placement = placeAliased(requests);

@@ -20,6 +20,30 @@ bool sameBufferDesc(const rhi::BufferDesc& a, const rhi::BufferDesc& b) {
            a.structStride == b.structStride && a.isVirtual == b.isVirtual;
 }
 
+namespace {
+// Asks the device once per distinct desc and remembers the answer across frames.
+class CachingMemorySizer final : public IMemorySizer {
+public:
+    CachingMemorySizer(rhi::IDevice& device, RenderGraph::ExecutionState& ex) : device_(device), ex_(ex) {}
+    rhi::MemoryRequirements requirements(const rhi::TextureDesc& d) const override {
+        for (const auto& [desc, req] : ex_.textureSizes)
+            if (sameTextureDesc(desc, d)) return req;
+        ex_.textureSizes.emplace_back(d, device_.memoryRequirements(d));
+        return ex_.textureSizes.back().second;
+    }
+    rhi::MemoryRequirements requirements(const rhi::BufferDesc& d) const override {
+        for (const auto& [desc, req] : ex_.bufferSizes)
+            if (sameBufferDesc(desc, d)) return req;
+        ex_.bufferSizes.emplace_back(d, device_.memoryRequirements(d));
+        return ex_.bufferSizes.back().second;
+    }
+
+private:
+    rhi::IDevice& device_;
+    RenderGraph::ExecutionState& ex_;
+};
+}  // namespace
+
 Status RenderGraph::realizeTransients(rhi::IDevice& device) {
     ExecutionState& ex = *exec_;
     const CompiledPlan& plan = *plan_;
@@ -104,7 +128,7 @@ void RenderGraph::collectTimings(rhi::IDevice& device) {
 }
 
 Status RenderGraph::execute(rhi::IDevice& device, rhi::ICommandList& cmd) {
-    CAUSTICS_CHECK(compile(DeviceMemorySizer(device)));
+    CAUSTICS_CHECK(compile(CachingMemorySizer(device, *exec_)));
     collectTimings(device);
     CAUSTICS_CHECK(realizeTransients(device));
     ExecutionState& ex = *exec_;

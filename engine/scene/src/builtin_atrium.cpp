@@ -29,9 +29,9 @@ Mesh makeColumn(float height) {
     Mesh col;
     const float r = 0.3f;
     appendMesh(col, makeBox({0.42f, 0.1f, 0.42f}), translate(0, 0.1f, 0));               // plinth
-    appendMesh(col, makeTorus(r + 0.02f, 0.07f, 48, 12), translate(0, 0.27f, 0));        // base moulding
-    appendMesh(col, makeCylinder(r, height - 0.9f, 48, 26, false), translate(0, 0.2f, 0)); // shaft
-    appendMesh(col, makeTorus(r + 0.01f, 0.05f, 48, 12), translate(0, height - 0.7f, 0)); // necking
+    appendMesh(col, makeTorus(r + 0.02f, 0.07f, 48, 8), translate(0, 0.27f, 0));        // base moulding
+    appendMesh(col, makeCylinder(r, height - 0.9f, 48, 20, false), translate(0, 0.2f, 0)); // shaft
+    appendMesh(col, makeTorus(r + 0.01f, 0.05f, 48, 8), translate(0, height - 0.7f, 0)); // necking
     Mesh bell = makeCylinder(r, 0.45f, 48, 6, false);
     for (glm::vec3& p : bell.positions) {   // flare the capital's bell outwards towards the top
         float t = p.y / 0.45f;

@@ -42,6 +42,11 @@ struct CausticsSettings {
     uint32_t atrousIterations = 3;
     float exposure = 1.0f;
     uint32_t seed = 1;
+    // Added by the module helper: which image CausticsModule's `display` output shows (FirstType and
+    // SecondType fall back to Caustics where the caustic passes do not export them separately), and a
+    // switch for the caustic passes as a whole (off: caustic radiance is zero, direct lighting stays).
+    CausticsAov aov = CausticsAov::Final;
+    bool causticsEnabled = true;
 
     // Limits beyond which a setting is refused (not clamped).
     static constexpr uint32_t kMaxMapResolution = 8192;

@@ -77,7 +77,7 @@ bool runAndWait(IDevice& device, const std::function<void(ICommandList&)>& recor
 }
 
 ShaderLibraryDesc shaderLibrary(std::string_view path, std::string exportName, ShaderStage stage) {
-    std::span<const uint32_t> words = test_rt_shaders::spirv(path);
+    std::span<const uint32_t> words = test_shaders::spirv(path);
     EXPECT_FALSE(words.empty()) << "no embedded shader " << path;
     ShaderLibraryDesc lib;
     lib.code.kind = ShaderCodeKind::SPIRV;

@@ -3,6 +3,8 @@
 // with their own constants; every pixel must show the constants of the records that ran for it.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "rt_fixture.h"
 
 namespace caustics::test {

@@ -172,6 +172,21 @@ TEST(RenderGraphBarriers, UnusedImportStillEndsInRequestedFinalState) {
     EXPECT_EQ(finals[0].after, ResourceState::ShaderResource);
 }
 
+TEST(RenderGraphBarriers, TransientOutputEndsInRequestedState) {
+    RenderGraph g;
+    RgTexture t;
+    g.addPass("draw", [&](PassBuilder& b) {
+        t = b.write(b.createTexture("exported", texDesc()), Access::RenderTarget);
+        return [](PassContext&) {};
+    });
+    g.markOutput(t, ResourceState::ShaderResource);
+    ASSERT_TRUE(g.compile(FakeMemorySizer()).ok());
+    const auto& finals = g.plan()->finalBarriers;
+    ASSERT_EQ(finals.size(), 1u);
+    EXPECT_EQ(finals[0].before, ResourceState::RenderTarget);
+    EXPECT_EQ(finals[0].after, ResourceState::ShaderResource);
+}
+
 TEST(RenderGraphBarriers, ImportedFirstUseStartsFromHostState) {
     RenderGraph g;
     RgTexture t = twoPasses(g, Access::SampledRead, Access::SampledRead, ResourceState::CopyDest);

@@ -77,9 +77,10 @@ public:
     std::string printText() const;
     std::string printGraphviz() const;
 
+    struct ExecutionState;   // opaque: state kept between frames (src/execution_state.h)
+
 private:
     friend class PassBuilder;
-    struct ExecutionState;
     uint32_t addResource(ResourceDecl decl);
     void setupError(std::string message);
     Status realizeTransients(rhi::IDevice& device);

@@ -1,0 +1,57 @@
+#pragma once
+// Internals shared by the caustic passes (not installed): the persistent objects and the per-frame
+// graph handles that flow from one pass to the next.
+#include <array>
+#include <vector>
+
+#include "caustics/caustic_passes.h"
+
+namespace caustics {
+
+struct CausticResources::Impl {
+    rhi::IDevice* device = nullptr;
+    bool floatAtomics = true;
+    rhi::BindingLayoutHandle mapLayout, forwardLayout, backwardLayout, gatherLayout;
+    rhi::BindingLayoutHandle resolveLayout, temporalLayout, atrousLayout, historyLayout;
+    // Built against a scene binding layout (recreated when the scene's layout changes).
+    const rhi::IBindingLayout* sceneLayoutSeen = nullptr;
+    rhi::GraphicsPipelineHandle mapPipeline;
+    rhi::StateObjectHandle forwardState, backwardState, gatherState;
+    rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
+    rhi::ComputePipelineHandle resolve, temporal, atrous, history;
+    rhi::BufferHandle sphereAabb;
+    rhi::AccelStructHandle sphereBlas;
+    rhi::AccelStructHandle sphereTlas;
+    uint32_t tlasCapacity = 0;
+    rhi::TextureHandle historyColor, historyDepth, historyNormal, historyObjectId;
+    uint32_t historyWidth = 0, historyHeight = 0;
+    bool historyValid = false;
+    // Binding sets made while recording must outlive the GPU's use: kept for three frames.
+    std::array<std::vector<rhi::BindingSetHandle>, 3> frameSets;
+    uint32_t frameSlot = 0;
+
+    Status ensureScenePipelines(const rhi::BindingLayoutHandle& sceneLayout);
+    Status ensureSizeResources(uint32_t width, uint32_t height);
+    // Binding set for this frame (kept alive); null after logging the error.
+    rhi::BindingSetHandle makeSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
+                                  rhi::BindingSetDesc desc);
+};
+
+// Handles of one frame, filled pass by pass.
+struct CausticFrame {
+    const CausticFrameInputs* in = nullptr;
+    CausticResources::Impl* res = nullptr;
+    uint32_t width = 0, height = 0;
+    rg::RgBuffer camera, maps, radiance1, radiance2, hits, stats, spheres, instances;
+    rg::RgTexture mapPositions, mapNormals, mapIds, mapDepth;
+    rg::RgAccelStruct sphereTlas;
+    CausticMapPlan plan;
+};
+
+void addSetupPass(rg::RenderGraph& graph, CausticFrame& f);
+void addMapPass(rg::RenderGraph& graph, CausticFrame& f);
+void addForwardPass(rg::RenderGraph& graph, CausticFrame& f);
+void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
+void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out);
+
+}  // namespace caustics

@@ -1,0 +1,62 @@
+// caustics.maps: the light-space G-buffers (paper 3.2, Figure 3), one texture-array layer per planned
+// map, all of the planned resolution (so one forward dispatch covers every light).
+#include "caustic_maps/caustic_internal.h"
+
+namespace caustics {
+
+void addMapPass(rg::RenderGraph& graph, CausticFrame& f) {
+    graph.addPass("caustics.maps", [&](rg::PassBuilder& b) {
+        const uint32_t n = f.in->settings.mapResolution;
+        const uint32_t layers = uint32_t(f.plan.maps.size());
+        auto tex = [&](const char* name, rhi::Format format, rg::Access access) {
+            rhi::TextureDesc d = rhi::TextureDesc().setDimension(rhi::TextureDimension::Texture2DArray).setSize(n, n)
+                                     .setArrayLayers(layers).setFormat(format).setUsage(rhi::TextureUsage::Sampled)
+                                     .setDebugName(name);
+            return b.write(b.createTexture(name, d), access);
+        };
+        f.mapPositions = tex("caustics.mapPositions", rhi::Format::RGBA32_FLOAT, rg::Access::RenderTarget);
+        f.mapNormals = tex("caustics.mapNormals", rhi::Format::RGBA16_FLOAT, rg::Access::RenderTarget);
+        f.mapIds = tex("caustics.mapObjectIds", rhi::Format::R32_UINT, rg::Access::RenderTarget);
+        f.mapDepth = tex("caustics.mapDepth", rhi::Format::D32_FLOAT, rg::Access::DepthWrite);
+        f.maps = b.read(f.maps, rg::Access::SampledRead);
+        std::vector<std::pair<uint32_t, uint32_t>> draws;   // (instance, index count)
+        const scene::GpuScene& gs = *f.in->gpuScene;
+        for (uint32_t i = 0; i < f.in->scene->instances.size(); ++i) {
+            uint32_t mesh = f.in->scene->instances[i].mesh;
+            if (mesh < gs.meshRanges.size() && gs.meshRanges[mesh].indexCount > 0) draws.push_back({i, gs.meshRanges[mesh].indexCount});
+        }
+        CausticFrame h = f;
+        rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
+        return [=](rg::PassContext& ctx) {
+            CausticResources::Impl& r = *h.res;
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.mapLayout,
+                                                  rhi::BindingSetDesc().add(rhi::BindingSetItem::storageBuffer(0, ctx.buffer(h.maps), false)));
+            if (!set) return;
+            rhi::ICommandList& cmd = ctx.cmd();
+            for (uint32_t layer = 0; layer < layers; ++layer) {
+                rhi::RenderingDesc rd;
+                rd.width = rd.height = n;
+                for (rg::RgTexture t : {h.mapPositions, h.mapNormals, h.mapIds}) {
+                    rhi::ColorAttachment a;
+                    a.texture = ctx.texture(t);
+                    a.layer = layer;
+                    a.clear = true;   // id 0 = nothing seen
+                    rd.colors.push_back(a);
+                }
+                rd.depth.texture = ctx.texture(h.mapDepth);
+                rd.depth.layer = layer;
+                rd.depth.clear = true;
+                cmd.beginRendering(rd);
+                cmd.setGraphicsPipeline(r.mapPipeline);
+                cmd.setViewport(0.0f, 0.0f, float(n), float(n));
+                cmd.setBindingSet(0, sceneSet);
+                cmd.setBindingSet(1, set);
+                cmd.setPushConstants(&layer, 4);
+                for (auto [instance, indexCount] : draws) cmd.draw(indexCount, 1, 0, instance);
+                cmd.endRendering();
+            }
+        };
+    });
+}
+
+}  // namespace caustics

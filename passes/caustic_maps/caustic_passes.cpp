@@ -1,0 +1,74 @@
+// addCausticPasses: plans the maps on the CPU, then adds the passes of caustic_passes.h in order.
+#include <algorithm>
+#include <cstring>
+
+#include "caustic_maps/caustic_internal.h"
+
+namespace caustics {
+
+void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
+    graph.addPass("caustics.setup", [&](rg::PassBuilder& b) {
+        const uint64_t pixelBytes = uint64_t(f.width) * f.height * 12;
+        auto buffer = [&](const char* name, uint64_t bytes, rhi::BufferUsage usage) {
+            return b.write(b.createBuffer(name, rhi::BufferDesc().setByteSize(bytes).setUsage(usage).setDebugName(name)),
+                           rg::Access::CopyDest);
+        };
+        const auto storage = rhi::BufferUsage::Storage | rhi::BufferUsage::CopyDest;
+        f.camera = buffer("caustics.camera", sizeof(CameraConstants), rhi::BufferUsage::Constant | rhi::BufferUsage::CopyDest);
+        f.maps = buffer("caustics.maps", std::max<size_t>(1, f.plan.maps.size()) * sizeof(CausticMapGpu), storage);
+        f.radiance1 = buffer("caustics.firstTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
+        f.radiance2 = buffer("caustics.secondTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
+        f.stats = buffer("caustics.stats", kStatCount * 4, storage | rhi::BufferUsage::CopySource);
+        CameraConstants camera = f.in->camera;
+        std::vector<CausticMapGpu> maps = f.plan.maps;
+        CausticFrame h = f;
+        return [=](rg::PassContext& ctx) {
+            rhi::ICommandList& cmd = ctx.cmd();
+            cmd.writeBuffer(ctx.buffer(h.camera), &camera, sizeof(camera));
+            if (!maps.empty()) cmd.writeBuffer(ctx.buffer(h.maps), maps.data(), maps.size() * sizeof(CausticMapGpu));
+            else cmd.fillBuffer(ctx.buffer(h.maps), 0);
+            cmd.fillBuffer(ctx.buffer(h.radiance1), 0);
+            cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
+            cmd.fillBuffer(ctx.buffer(h.stats), 0);
+        };
+    });
+}
+
+Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources& persistent,
+                                        const CausticFrameInputs& in) {
+    CausticResources::Impl* res = persistent.impl();
+    if (!res) return makeError("addCausticPasses: CausticResources were not created");
+    if (!in.scene || !in.gpuScene || !in.sceneBindings) return makeError("addCausticPasses: scene inputs missing");
+    if (!in.gbuffer.valid()) return makeError("addCausticPasses: G-buffer handles are invalid");
+    CAUSTICS_CHECK(in.settings.validate());
+    CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
+    CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height));
+    res->frameSlot = in.frameIndex % uint32_t(res->frameSets.size());
+    res->frameSets[res->frameSlot].clear();
+
+    CausticFrame f;
+    f.in = &in;
+    f.res = res;
+    f.width = in.gbuffer.width;
+    f.height = in.gbuffer.height;
+    f.plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene));
+
+    CausticOutputs out;
+    out.floatAtomics = res->floatAtomics;
+    addSetupPass(graph, f);
+    if (!f.plan.maps.empty()) {
+        addMapPass(graph, f);
+        addForwardPass(graph, f);
+        if (in.settings.secondType) addBackwardPasses(graph, f);
+    }
+    addResolveAndFilterPasses(graph, f, out);
+    out.firstTypeBuffer = f.radiance1;
+    out.secondTypeBuffer = f.radiance2;
+    out.hits = f.hits;
+    out.stats = f.stats;
+    out.mapPositions = f.mapPositions;
+    out.plan = std::move(f.plan);
+    return out;
+}
+
+}  // namespace caustics

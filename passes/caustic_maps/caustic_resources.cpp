@@ -1,0 +1,188 @@
+// Persistent objects of the caustic passes: binding layouts, pipelines and state objects, the
+// unit-sphere BLAS of the second-type gather, the sphere TLAS and the filter history.
+#include "caustic_maps/caustic_internal.h"
+
+#include "caustics/pass_shaders.h"
+#include <cstring>
+
+#include "rhi/log.h"
+
+namespace caustics {
+namespace {
+
+using rhi::BindingType;
+using rhi::ShaderStage;
+
+Result<rhi::BindingLayoutHandle> layout(rhi::IDevice& d, std::initializer_list<std::pair<uint32_t, BindingType>> items) {
+    rhi::BindingLayoutDesc desc;
+    desc.setVisibility(ShaderStage::All);
+    for (auto [slot, type] : items) desc.add(slot, type);
+    return d.createBindingLayout(desc);
+}
+
+Result<rhi::ShaderLibraryDesc> library(const char* path, const char* name, ShaderStage stage) {
+    rhi::ShaderLibraryDesc lib;
+    CAUSTICS_TRY(lib.code, pass_shaders::shaderCode(path));
+    lib.exports.push_back({name, "main", stage});
+    return lib;
+}
+
+Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path, const rhi::BindingLayoutHandle& l,
+                                           uint32_t push) {
+    rhi::ComputePipelineDesc desc;
+    CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(path));
+    desc.shader.stage = ShaderStage::Compute;
+    desc.bindings.layouts = {l};
+    desc.bindings.pushConstantBytes = push;
+    desc.debugName = path;
+    return d.createComputePipeline(desc);
+}
+
+// Ray-generation + trace.rmiss/trace.rchit over the scene TLAS (forward and backward passes).
+Status sceneTraceState(rhi::IDevice& d, const char* rayGen, const rhi::BindingLayoutHandle& scene,
+                       const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table) {
+    rhi::StateObjectDesc desc;
+    CAUSTICS_TRY(auto rg, library(rayGen, "rayGen", ShaderStage::RayGen));
+    CAUSTICS_TRY(auto miss, library("forward_trace/trace.rmiss", "miss", ShaderStage::Miss));
+    CAUSTICS_TRY(auto hit, library("forward_trace/trace.rchit", "closestHit", ShaderStage::ClosestHit));
+    desc.libraries = {rg, miss, hit};
+    desc.hitGroups.push_back({"hit", rhi::HitGroupType::Triangles, "closestHit", "", ""});
+    desc.maxPayloadBytes = 20;   // TracePayload
+    desc.maxAttributeBytes = 8;
+    desc.maxRecursionDepth = 1;  // the specular chain is iterated in the raygen shader
+    desc.globalBindings.layouts = {scene, pass};
+    desc.globalBindings.pushConstantBytes = 32;
+    desc.debugName = rayGen;
+    CAUSTICS_TRY(so, d.createStateObject(desc));
+    CAUSTICS_TRY(table, d.createShaderTable(rhi::ShaderTableDesc{so}.setRayGen("rayGen").addMiss("miss").addHitGroup("hit")));
+    return okStatus();
+}
+
+}  // namespace
+
+CausticResources::CausticResources() = default;
+CausticResources::~CausticResources() = default;
+CausticResources::CausticResources(CausticResources&&) noexcept = default;
+CausticResources& CausticResources::operator=(CausticResources&&) noexcept = default;
+
+Result<CausticResources> CausticResources::create(rhi::IDevice& d) {
+    CausticResources r;
+    r.impl_ = std::make_unique<Impl>();
+    Impl& m = *r.impl_;
+    m.device = &d;
+    m.floatAtomics = d.capabilities().shaderFloatAtomicAdd;
+    const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
+               TX = BindingType::SampledTexture, IM = BindingType::StorageTexture, AS = BindingType::AccelStruct;
+    CAUSTICS_TRY(m.mapLayout, layout(d, {{0, RO}}));
+    CAUSTICS_TRY(m.forwardLayout, layout(d, {{0, CB}, {1, RO}, {2, TX}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW}}));
+    CAUSTICS_TRY(m.backwardLayout, layout(d, {{0, CB}, {1, TX}, {2, TX}, {3, RW}, {4, RW}, {5, RW}}));
+    CAUSTICS_TRY(m.gatherLayout, layout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
+    CAUSTICS_TRY(m.resolveLayout, layout(d, {{0, RO}, {1, RO}, {2, IM}, {3, IM}, {4, IM}}));
+    CAUSTICS_TRY(m.temporalLayout, layout(d, {{0, CB}, {1, TX}, {2, TX}, {3, TX}, {4, TX}, {5, TX}, {6, TX}, {7, TX}, {8, TX}, {9, IM}}));
+    CAUSTICS_TRY(m.atrousLayout, layout(d, {{0, TX}, {1, TX}, {2, TX}, {3, TX}, {4, IM}}));
+    CAUSTICS_TRY(m.historyLayout, layout(d, {{0, TX}, {1, TX}, {2, TX}, {3, TX}, {4, IM}, {5, IM}, {6, IM}, {7, IM}}));
+    CAUSTICS_TRY(m.resolve, compute(d, "caustic_filter/resolve.comp", m.resolveLayout, 16));
+    CAUSTICS_TRY(m.temporal, compute(d, "caustic_filter/temporal.comp", m.temporalLayout, 8));
+    CAUSTICS_TRY(m.atrous, compute(d, "caustic_filter/atrous.comp", m.atrousLayout, 16));
+    CAUSTICS_TRY(m.history, compute(d, "caustic_filter/history.comp", m.historyLayout, 8));
+
+    // Gather: sphere.rint + gather.rahit over the sphere TLAS (procedural hit group).
+    rhi::StateObjectDesc g;
+    CAUSTICS_TRY(auto rgen, library("backward_trace/gather.rgen", "rayGen", ShaderStage::RayGen));
+    CAUSTICS_TRY(auto miss, library("backward_trace/gather.rmiss", "miss", ShaderStage::Miss));
+    CAUSTICS_TRY(auto isect, library("backward_trace/sphere.rint", "sphere", ShaderStage::Intersection));
+    CAUSTICS_TRY(auto ahit, library(m.floatAtomics ? "backward_trace/gather.rahit" : "backward_trace/gather_fixed.rahit",
+                                    "gather", ShaderStage::AnyHit));
+    g.libraries = {rgen, miss, isect, ahit};
+    g.hitGroups.push_back({"spheres", rhi::HitGroupType::Procedural, "", "gather", "sphere"});
+    g.maxPayloadBytes = 4;
+    g.maxAttributeBytes = 8;
+    g.globalBindings.layouts = {m.gatherLayout};
+    g.globalBindings.pushConstantBytes = 4;
+    g.debugName = "caustics.gather";
+    CAUSTICS_TRY(m.gatherState, d.createStateObject(g));
+    CAUSTICS_TRY(m.gatherTable, d.createShaderTable(rhi::ShaderTableDesc{m.gatherState}.setRayGen("rayGen").addMiss("miss").addHitGroup("spheres")));
+
+    // One unit-sphere AABB; NoDuplicateAnyHit because the any-hit shader accumulates (DESIGN.md).
+    const float aabb[6] = {-1, -1, -1, 1, 1, 1};
+    CAUSTICS_TRY(m.sphereAabb, d.createBuffer(rhi::BufferDesc().setByteSize(sizeof(aabb))
+                                                  .setUsage(rhi::BufferUsage::AccelStructInput)
+                                                  .setMemory(rhi::MemoryType::Upload).setDebugName("caustics.sphereAabb")));
+    std::memcpy(m.sphereAabb->mappedData(), aabb, sizeof(aabb));
+    rhi::AccelStructDesc blas;
+    blas.geometries.push_back(rhi::GeometryDesc::fromAabbs({m.sphereAabb, 0, 1, 24}, rhi::GeometryFlags::NoDuplicateAnyHit));
+    blas.debugName = "caustics.sphereBlas";
+    CAUSTICS_TRY(m.sphereBlas, d.createAccelStruct(blas));
+    CAUSTICS_TRY(auto cmd, d.createCommandList());
+    cmd->begin();
+    cmd->buildBottomLevel(m.sphereBlas);
+    cmd->barrier(rhi::AccelStructBarrier{m.sphereBlas, rhi::ResourceState::AccelStructWrite, rhi::ResourceState::AccelStructRead});
+    cmd->end();
+    CAUSTICS_TRY(uint64_t fence, d.submit(cmd));
+    CAUSTICS_CHECK(d.waitForFence(fence));
+    return r;
+}
+
+Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHandle& sceneLayout) {
+    if (sceneLayoutSeen == sceneLayout.get() && mapPipeline) return okStatus();
+    rhi::IDevice& d = *device;
+    rhi::GraphicsPipelineDesc gp;
+    CAUSTICS_TRY(gp.vertexShader.code, pass_shaders::shaderCode("caustic_maps/caustic_map.vert"));
+    gp.vertexShader.stage = ShaderStage::Vertex;
+    CAUSTICS_TRY(gp.fragmentShader.code, pass_shaders::shaderCode("caustic_maps/caustic_map.frag"));
+    gp.fragmentShader.stage = ShaderStage::Fragment;
+    gp.bindings.layouts = {sceneLayout, mapLayout};
+    gp.bindings.pushConstantBytes = 4;
+    gp.cullMode = rhi::CullMode::None;   // glass is seen from both sides
+    gp.colorFormats = {rhi::Format::RGBA32_FLOAT, rhi::Format::RGBA16_FLOAT, rhi::Format::R32_UINT};
+    gp.depthFormat = rhi::Format::D32_FLOAT;
+    gp.debugName = "caustics.maps";
+    CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
+    CAUSTICS_CHECK(sceneTraceState(d, floatAtomics ? "forward_trace/forward.rgen" : "forward_trace/forward_fixed.rgen",
+                                   sceneLayout, forwardLayout, forwardState, forwardTable));
+    CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", sceneLayout, backwardLayout, backwardState, backwardTable));
+    sceneLayoutSeen = sceneLayout.get();
+    return okStatus();
+}
+
+Status CausticResources::Impl::ensureSizeResources(uint32_t width, uint32_t height) {
+    rhi::IDevice& d = *device;
+    uint32_t pixels = width * height;
+    if (tlasCapacity < pixels) {
+        rhi::AccelStructDesc tlas;
+        tlas.isTopLevel = true;
+        tlas.maxInstances = pixels;
+        tlas.flags = rhi::AccelBuildFlags::PreferFastBuild;   // rebuilt every frame
+        tlas.debugName = "caustics.sphereTlas";
+        CAUSTICS_TRY(sphereTlas, d.createAccelStruct(tlas));
+        tlasCapacity = pixels;
+    }
+    if (historyWidth != width || historyHeight != height) {
+        auto make = [&](rhi::Format f, const char* name) {
+            return d.createTexture(rhi::TextureDesc().setSize(width, height).setFormat(f)
+                                       .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage)
+                                       .setDebugName(name));
+        };
+        CAUSTICS_TRY(historyColor, make(rhi::Format::RGBA32_FLOAT, "caustics.historyColor"));
+        CAUSTICS_TRY(historyDepth, make(rhi::Format::R32_FLOAT, "caustics.historyDepth"));
+        CAUSTICS_TRY(historyNormal, make(rhi::Format::RGBA16_FLOAT, "caustics.historyNormal"));
+        CAUSTICS_TRY(historyObjectId, make(rhi::Format::R32_UINT, "caustics.historyObjectId"));
+        historyWidth = width;
+        historyHeight = height;
+        historyValid = false;
+    }
+    return okStatus();
+}
+
+rhi::BindingSetHandle CausticResources::Impl::makeSet(rhi::IDevice& d, const rhi::BindingLayoutHandle& l,
+                                                      rhi::BindingSetDesc desc) {
+    auto set = d.createBindingSet(desc, l);
+    if (!set) {
+        log(LogLevel::Error, "caustics: binding set: " + set.message());
+        return nullptr;
+    }
+    frameSets[frameSlot].push_back(set.value());
+    return set.value();
+}
+
+}  // namespace caustics

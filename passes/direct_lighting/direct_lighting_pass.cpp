@@ -1,0 +1,86 @@
+#include "direct_lighting_pass.h"
+
+#include "caustics/pass_shaders.h"
+
+namespace caustics {
+
+Result<DirectLightingPass> DirectLightingPass::create(rhi::IDevice& device, const rhi::BindingLayoutHandle& sceneLayout,
+                                                      const rhi::BindingLayoutHandle& cameraLayout) {
+    DirectLightingPass pass;
+    rhi::BindingLayoutDesc layoutDesc;
+    layoutDesc.setVisibility(rhi::ShaderStage::AllRayTracing)
+        .add(0, rhi::BindingType::SampledTexture)    // normalRoughness
+        .add(1, rhi::BindingType::SampledTexture)    // albedoMetallic
+        .add(2, rhi::BindingType::SampledTexture)    // linearDepth
+        .add(3, rhi::BindingType::SampledTexture)    // objectId
+        .add(4, rhi::BindingType::StorageTexture);   // radiance out
+    CAUSTICS_TRY(pass.layout_, device.createBindingLayout(layoutDesc));
+
+    auto library = [](const char* file, const char* name, rhi::ShaderStage stage) -> Result<rhi::ShaderLibraryDesc> {
+        rhi::ShaderLibraryDesc lib;
+        CAUSTICS_TRY(lib.code, pass_shaders::shaderCode(file));
+        lib.exports.push_back({name, "main", stage});
+        return lib;
+    };
+    rhi::StateObjectDesc desc;
+    CAUSTICS_TRY(auto rgen, library("direct_lighting/direct.rgen", "directRayGen", rhi::ShaderStage::RayGen));
+    CAUSTICS_TRY(auto surfaceMiss, library("direct_lighting/surface.rmiss", "surfaceMiss", rhi::ShaderStage::Miss));
+    CAUSTICS_TRY(auto shadowMiss, library("direct_lighting/shadow.rmiss", "shadowMiss", rhi::ShaderStage::Miss));
+    CAUSTICS_TRY(auto surfaceHit, library("direct_lighting/surface.rchit", "surfaceClosestHit", rhi::ShaderStage::ClosestHit));
+    desc.libraries = {rgen, surfaceMiss, shadowMiss, surfaceHit};
+    desc.hitGroups.push_back({"surfaceHit", rhi::HitGroupType::Triangles, "surfaceClosestHit", "", ""});
+    desc.maxPayloadBytes = 16;   // SurfacePayload
+    desc.maxAttributeBytes = 8;
+    desc.maxRecursionDepth = 1;  // only the raygen traces
+    desc.globalBindings.layouts = {sceneLayout, cameraLayout, pass.layout_};
+    desc.debugName = "direct lighting";
+    CAUSTICS_TRY(pass.stateObject_, device.createStateObject(desc));
+
+    rhi::ShaderTableDesc table;
+    table.stateObject = pass.stateObject_;
+    table.setRayGen("directRayGen").addMiss("surfaceMiss").addMiss("shadowMiss").addHitGroup("surfaceHit");
+    table.debugName = "direct lighting";
+    CAUSTICS_TRY(pass.shaderTable_, device.createShaderTable(table));
+    return pass;
+}
+
+rg::RgTexture DirectLightingPass::addToGraph(rg::RenderGraph& graph, const FrameContext& frame,
+                                             const GBuffer& gbuffer) const {
+    rg::RgTexture out;
+    graph.addPass("direct_lighting", [&](rg::PassBuilder& b) {
+        rg::RgTexture normal = b.read(gbuffer.normalRoughness, rg::Access::SampledRead);
+        rg::RgTexture albedo = b.read(gbuffer.albedoMetallic, rg::Access::SampledRead);
+        rg::RgTexture depth = b.read(gbuffer.linearDepth, rg::Access::SampledRead);
+        rg::RgTexture ids = b.read(gbuffer.objectId, rg::Access::SampledRead);
+        out = b.write(b.createTexture("direct", gbufferTextureDesc(kOutputFormat, gbuffer.width, gbuffer.height, "direct")),
+                      rg::Access::StorageWrite);
+        rg::RgTexture target = out;
+        uint32_t w = gbuffer.width, h = gbuffer.height;
+        rhi::BindingLayoutHandle layout = layout_;
+        rhi::StateObjectHandle so = stateObject_;
+        rhi::ShaderTableHandle table = shaderTable_;
+        rhi::BindingSetHandle sceneSet = frame.sceneBindings->set, cameraSet = frame.cameraSet;
+        return [=](rg::PassContext& ctx) {
+            rhi::BindingSetDesc sd;
+            sd.add(rhi::BindingSetItem::sampledTexture(0, ctx.texture(normal)))
+                .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(albedo)))
+                .add(rhi::BindingSetItem::sampledTexture(2, ctx.texture(depth)))
+                .add(rhi::BindingSetItem::sampledTexture(3, ctx.texture(ids)))
+                .add(rhi::BindingSetItem::storageTexture(4, ctx.texture(target)));
+            auto set = ctx.device()->createBindingSet(sd, layout);
+            if (!set) {
+                log(LogLevel::Error, "direct_lighting: " + set.message());
+                return;
+            }
+            rhi::ICommandList& cmd = ctx.cmd();
+            cmd.setRayTracingState(so, table);
+            cmd.setBindingSet(kSceneSet, sceneSet);
+            cmd.setBindingSet(kCameraSet, cameraSet);
+            cmd.setBindingSet(kPassSet, *set);
+            cmd.dispatchRays(w, h, 1);
+        };
+    });
+    return out;
+}
+
+}  // namespace caustics

@@ -1,0 +1,58 @@
+// caustics.forward (paper 3.2, Figure 4): one ray-generation launch per (map texel x sample, map row,
+// map layer) covers every caustic-forming light in one dispatch; forward.rgen emits, traces the
+// specular chain, splats first-type caustics atomically and stores the diffuse hits.
+#include <cmath>
+
+#include "caustic_maps/caustic_internal.h"
+
+namespace caustics {
+
+void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
+    graph.addPass("caustics.forward", [&](rg::PassBuilder& b) {
+        const CausticsSettings& s = f.in->settings;
+        f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
+        f.maps = b.read(f.maps, rg::Access::SampledRead);
+        f.mapIds = b.read(f.mapIds, rg::Access::SampledRead);
+        rg::RgTexture linearDepth = b.read(f.in->gbuffer.linearDepth, rg::Access::SampledRead);
+        rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
+        f.radiance1 = b.write(f.radiance1, rg::Access::StorageReadWrite);
+        f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
+        f.hits = b.write(b.createBuffer("caustics.hits", rhi::BufferDesc()
+                                                             .setByteSize(uint64_t(s.maxStoredHits) * sizeof(CausticHit))
+                                                             .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::CopySource)
+                                                             .setDebugName("caustics.hits")),
+                         rg::Access::StorageWrite);
+        struct Push {
+            uint32_t mapSize, samplesPerTexel;
+            float raysPerTexel;
+            uint32_t maxDepth, frame, flags, maxStoredHits, pad;
+        } push{s.mapResolution, uint32_t(std::ceil(s.raysPerTexel)), s.raysPerTexel, s.maxSpecularDepth,
+               f.in->frameIndex * 0x9E3779B9u + s.seed, s.russianRoulette ? 1u : 0u, s.maxStoredHits, 0};
+        static_assert(sizeof(Push) == 32);
+        const uint32_t layers = uint32_t(f.plan.maps.size());
+        CausticFrame h = f;
+        rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
+        return [=](rg::PassContext& ctx) {
+            CausticResources::Impl& r = *h.res;
+            rhi::BindingSetDesc d;
+            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(h.camera)))
+                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(h.maps), false))
+                .add(rhi::BindingSetItem::sampledTexture(2, ctx.texture(h.mapIds)))
+                .add(rhi::BindingSetItem::sampledTexture(3, ctx.texture(linearDepth)))
+                .add(rhi::BindingSetItem::sampledTexture(4, ctx.texture(objectId)))
+                .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.radiance1)))
+                .add(rhi::BindingSetItem::storageBuffer(6, ctx.buffer(h.hits)))
+                .add(rhi::BindingSetItem::storageBuffer(7, ctx.buffer(h.stats)));
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.forwardLayout, d);
+            if (!set) return;
+            rhi::ICommandList& cmd = ctx.cmd();
+            cmd.setRayTracingState(r.forwardState, r.forwardTable);
+            cmd.setBindingSet(0, sceneSet);
+            cmd.setBindingSet(1, set);
+            cmd.setPushConstants(&push, sizeof(push));
+            cmd.dispatchRays(push.mapSize * push.samplesPerTexel, push.mapSize, layers);
+        };
+    });
+}
+
+}  // namespace caustics

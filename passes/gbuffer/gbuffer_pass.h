@@ -1,0 +1,20 @@
+#pragma once
+// Pass 1 (DESIGN.md): the camera G-buffer by rasterization, one draw per scene instance with vertex
+// pulling from the GPU scene buffers; writes the six targets of caustics/gbuffer.h.
+#include "caustics/frame_context.h"
+#include "caustics/gbuffer.h"
+#include "render_graph/render_graph.h"
+
+namespace caustics {
+
+class GBufferPass {
+public:
+    static Result<GBufferPass> create(rhi::IDevice& device, const rhi::BindingLayoutHandle& sceneLayout,
+                                      const rhi::BindingLayoutHandle& cameraLayout);
+    GBuffer addToGraph(rg::RenderGraph& graph, const FrameContext& frame) const;
+
+private:
+    rhi::GraphicsPipelineHandle pipeline_;
+};
+
+}  // namespace caustics

@@ -1,0 +1,110 @@
+#pragma once
+// The caustic passes of the paper (Komarov et al. 2021, sections 3.2-3.4) as render-graph passes:
+//   caustics.maps      raster light-space G-buffers (one texture-array layer per caustic-forming light)
+//   caustics.forward   forward trace from every specular map texel; first-type splat + hit store (3.2)
+//   caustics.backward  camera rays through specular pixels to the first diffuse hit -> spheres (3.3)
+//   caustics.spheres   TLAS over the spheres (instances written by the GPU, buildTopLevelFromBuffer)
+//   caustics.gather    stored forward hits x spheres (any-hit density estimate), second type (3.3)
+//   caustics.resolve   radiance buffers -> textures
+//   caustics.temporal / caustics.atrous / caustics.history   the filter (3.4), when settings.filter
+// docs/caustics.md explains every choice the paper leaves open.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "caustics/camera_constants.h"
+#include "caustics/caustic_map_plan.h"
+#include "caustics/caustics_settings.h"
+#include "caustics/gbuffer.h"
+#include "caustics/scene_bindings.h"
+#include "render_graph/render_graph.h"
+#include "rhi/device.h"
+#include "scene/gpu_scene.h"
+#include "scene/scene.h"
+
+namespace caustics {
+
+// Layout of the small statistics buffer every frame writes (uint32 each): index
+// kStatRaysPerLight + l counts the forward rays launched for scene light l (skipped lights: 0).
+inline constexpr uint32_t kStatStoredHitAttempts = 0;  // diffuse hits offered to the hit buffer
+inline constexpr uint32_t kStatSplats = 1;             // first-type splats that passed the depth test
+inline constexpr uint32_t kStatGatherHits = 2;         // (hit, sphere) pairs accumulated
+inline constexpr uint32_t kStatSpheres = 3;            // backward hits that became spheres
+inline constexpr uint32_t kStatRaysPerLight = 4;
+inline constexpr uint32_t kStatCount = kStatRaysPerLight + kMaxCausticLights;
+
+// One stored forward diffuse hit (std430, 48 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
+struct CausticHit {
+    glm::vec3 position;
+    uint32_t objectId;       // instance index + 1
+    glm::vec3 normal;        // unit, on the side the photon arrived from
+    uint32_t light;
+    glm::vec3 fluxBsdf;      // photon flux x Lambert BRDF (albedo / pi): lm / sr per channel
+    float pad;
+};
+static_assert(sizeof(CausticHit) == 48);
+
+// One backward (second-type) integration sphere per camera pixel (std430, 48 bytes).
+struct CausticSphere {
+    glm::vec3 centre;
+    float radius;            // 0 = the pixel has no sphere
+    glm::vec3 transmittance; // camera-path throughput through the specular chain
+    uint32_t objectId;
+    glm::vec3 normal;        // unit, on the side the camera path arrived from
+    uint32_t pixel;
+};
+static_assert(sizeof(CausticSphere) == 48);
+
+// Objects that live across frames: pipelines, the sphere BLAS/TLAS, filter history. Create once per
+// device and scene (or when the output size changes: it recreates itself).
+class CausticResources {
+public:
+    CausticResources();
+    ~CausticResources();
+    CausticResources(CausticResources&&) noexcept;
+    CausticResources& operator=(CausticResources&&) noexcept;
+
+    static Result<CausticResources> create(rhi::IDevice& device);
+
+    struct Impl;
+    Impl* impl() { return impl_.get(); }
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+struct CausticFrameInputs {
+    rhi::IDevice* device = nullptr;
+    const scene::Scene* scene = nullptr;
+    const scene::GpuScene* gpuScene = nullptr;
+    const SceneBindings* sceneBindings = nullptr;
+    GBuffer gbuffer;                   // W x H, this frame's
+    CameraConstants camera;            // prevViewProj = last frame's viewProj (filter reprojection)
+    CausticsSettings settings;
+    uint32_t frameIndex = 0;
+    bool resetHistory = false;         // camera cut: the filter forgets the past
+};
+
+struct CausticOutputs {
+    rg::RgTexture radiance;     // RGBA32F W x H, first + second type, filtered when settings.filter
+    rg::RgTexture firstType;    // RGBA32F, unfiltered
+    rg::RgTexture secondType;   // RGBA32F, unfiltered (black when settings.secondType is off)
+    rg::RgBuffer firstTypeBuffer;   // float or fixed-point (CausticMapPlan::fixedPointScale) RGB per pixel
+    rg::RgBuffer secondTypeBuffer;
+    rg::RgBuffer hits;          // CausticHit[maxStoredHits]
+    rg::RgBuffer stats;         // uint32[kStatCount]
+    rg::RgTexture mapPositions; // RGBA32F array, one layer per planned map (invalid if none)
+    CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped
+    bool floatAtomics = true;   // false: the buffers hold fixed-point uint (kFixedPointScale)
+};
+
+// Radiance values in the fixed-point fallback buffers are round(value * kFixedPointScale) as uint32
+// (cd/m^2 x 2^16: resolution 1.5e-5 cd/m^2, saturation at 65535 cd/m^2 per pixel and frame).
+inline constexpr float kFixedPointScale = 65536.0f;
+
+Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources& persistent,
+                                        const CausticFrameInputs& inputs);
+
+}  // namespace caustics

@@ -1,0 +1,12 @@
+#include "bench_modes.h"
+
+namespace caustics::bench {
+
+std::span<const BenchMode> benchModes() {
+    static const BenchMode kModes[] = {
+        {"rays", "primary and incoherent rays against a procedural ~1M-triangle mesh", runRaysMode},
+    };
+    return kModes;
+}
+
+}  // namespace caustics::bench

@@ -1,0 +1,152 @@
+// Forward caustic trace (paper 3.2, Figure 4): one launch per (map texel x sample, map row, map layer).
+// Shared by forward.rgen (float atomics) and forward_fixed.rgen (fixed-point atomics).
+#extension GL_EXT_ray_tracing : require
+#extension GL_EXT_samplerless_texture_functions : require
+#include "scene/scene.glsl"
+#include "scene/camera.glsl"
+#include "common/emission.h"
+#include "common/rng.h"
+#include "common/volume.h"
+#include "caustic_maps/caustic_map.glsl"
+#include "forward_trace/caustic_hit.glsl"
+
+layout(set = 1, binding = 0) uniform CameraBlock { CameraConstants camera; };
+layout(set = 1, binding = 1, std430) readonly buffer Maps { CausticMap maps[]; };
+layout(set = 1, binding = 2) uniform utexture2DArray mapObjectIds;
+layout(set = 1, binding = 3) uniform texture2D gLinearDepth;
+layout(set = 1, binding = 4) uniform utexture2D gObjectId;
+layout(set = 1, binding = 6, std430) buffer Hits { CausticHit hits[]; };
+layout(set = 1, binding = 7, std430) buffer Stats { uint stats[]; };
+#define RADIANCE_SET 1
+#define RADIANCE_BINDING 5
+#include "forward_trace/radiance_atomics.glsl"
+
+layout(push_constant) uniform Push {
+    uint mapSize;
+    uint samplesPerTexel;   // ceil(raysPerTexel)
+    float raysPerTexel;
+    uint maxDepth;
+    uint frame;
+    uint flags;             // bit 0: Russian roulette
+    uint maxStoredHits;
+    uint pad;
+} pc;
+
+layout(location = 0) rayPayloadEXT TracePayload payload;
+
+bool texelIsSpecular(ivec2 t, int layer) {
+    int n = int(pc.mapSize) - 1;
+    uint id = texelFetch(mapObjectIds, ivec3(clamp(t, ivec2(0), ivec2(n)), layer), 0).r;
+    if (id == 0u) return false;
+    return sceneMaterialIsSpecular(sceneMaterials[sceneInstances[id - 1u].material]);
+}
+
+// Light-tracing estimator (shaders/common/camera.h) with the camera G-buffer as the visibility test
+// (paper Figure 4b): same object and a depth within the pixel's footprint on the surface.
+void splatFirstType(vec3 x, vec3 nFacing, uint objectId, vec3 fluxBsdf) {
+    PinholeCamera cam = cameraPinhole(camera);
+    CameraProjection pr = projectToCamera(cam, x);
+    if (!pr.valid || pr.depth < camera.clip.x) return;
+    vec3 toEye = (cam.eye - x) / pr.distance;
+    float cosSurface = dot(nFacing, toEye);
+    if (cosSurface <= 0.0) return;
+    ivec2 px = ivec2(pr.pixel);
+    if (texelFetch(gObjectId, px, 0).r != objectId) return;
+    float gDepth = texelFetch(gLinearDepth, px, 0).r;
+    // Depth varies across one pixel by (pixel footprint) x tan(view angle); allow that plus 0.1 %.
+    float footprint = 2.0 * cam.tanHalfFovY / cam.height;
+    float tanView = min(sqrt(max(0.0, 1.0 - cosSurface * cosSurface)) / cosSurface, 20.0);
+    if (abs(pr.depth - gDepth) > gDepth * (1e-3 + 1.5 * footprint * tanView)) return;
+    float factor = pinholeSplatFactor(cam, pr.cosTheta, cosSurface, pr.distance);
+    addRadiance(uint(px.y) * camera.frame.x + uint(px.x), fluxBsdf * factor);
+    atomicAdd(stats[kStatSplats], 1u);
+}
+
+void main() {
+    uvec3 id = gl_LaunchIDEXT;
+    uint tx = id.x / pc.samplesPerTexel;
+    uint sampleIndex = id.x % pc.samplesPerTexel;
+    uint ty = id.y;
+    int layer = int(id.z);
+    CausticMap m = maps[layer];
+    // Only texels whose 3x3 neighbourhood sees a specular surface emit: the ray below finds the exact
+    // sub-texel hit, the neighbourhood keeps silhouette texels whose centre misses the object.
+    bool specular = false;
+    for (int dy = -1; dy <= 1 && !specular; ++dy)
+        for (int dx = -1; dx <= 1 && !specular; ++dx) specular = texelIsSpecular(ivec2(tx, ty) + ivec2(dx, dy), layer);
+    if (!specular) return;
+
+    Rng rng = rngCreate(ty * pc.mapSize + tx, m.light, sampleIndex, pc.frame);
+    // Fractional rays per texel: sample s of a texel is emitted with probability clamp(r - s, 0, 1),
+    // so a texel emits r rays on average; each carries 1/r of the texel's flux (unbiased).
+    float emitProbability = clamp(pc.raysPerTexel - float(sampleIndex), 0.0, 1.0);
+    if (emitProbability < 1.0 && rngNextFloat(rng) >= emitProbability) return;
+    atomicAdd(stats[kStatRaysPerLight + m.light], 1u);
+
+    vec2 coord = vec2(tx, ty) + rngNextFloat2(rng);
+    float n = float(pc.mapSize);
+    vec3 origin, dir, flux;
+    if (m.orthographic != 0u) {
+        vec2 q = m.extent * (2.0 * coord / n - 1.0);
+        origin = m.origin + q.x * m.right + q.y * m.up;
+        dir = m.forward;
+        flux = m.intensity * photonFluxOrthographic(1.0, orthographicTexelArea(m.extent, n), pc.raysPerTexel);
+    } else {
+        vec2 q = perspectiveMapPlanePoint(coord, n, m.extent);
+        origin = m.origin;
+        dir = normalize(m.forward + q.x * m.right + q.y * m.up);
+        float omega = perspectiveTexelSolidAngle(uvec2(tx, ty), n, m.extent);
+        float falloff = m.cosOuter > -1.0 ? spotAttenuation(dot(dir, m.spotAxis), m.cosInner, m.cosOuter) : 1.0;
+        flux = m.intensity * (falloff * photonFluxPerspective(1.0, omega, pc.raysPerTexel));
+    }
+    if (max(flux.x, max(flux.y, flux.z)) <= 0.0) return;
+
+    vec3 sigma = vec3(0.0);
+    vec3 throughput = vec3(1.0);
+    uint events = 0u;
+    for (uint vertex = 0u; vertex <= pc.maxDepth + 1u; ++vertex) {
+        payload.t = -1.0;
+        traceRayEXT(sceneTlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 0, 0, origin, 0.0, dir, 1.0e30, 0);
+        if (payload.t < 0.0) break;
+        if (sigma != vec3(0.0)) flux *= beerLambert(sigma, payload.t);
+        SurfaceHit h = sceneSurfaceHit(payload.instance, payload.primitive, payload.barycentrics);
+        vec3 x = origin + payload.t * dir;
+        vec3 ng = dot(h.shadingNormal, h.geometricNormal) < 0.0 ? -h.geometricNormal : h.geometricNormal;
+        float eps = rayEpsilon(x);
+        if (sceneMaterialIsSpecular(h.material)) {
+            if (events >= pc.maxDepth) break;
+            SpecularEvent ev = sampleSpecularEvent(dir, h.shadingNormal, h.optics, rngNextFloat3(rng), kTransportImportance);
+            if (ev.kind == kEventAbsorbed) break;
+            if (ev.kind != kEventDiffuse) {
+                ++events;
+                flux *= ev.weight;
+                throughput *= ev.weight;
+                dir = ev.direction;
+                sigma = ev.insideMedium ? volumeSigmaA(h.material.attenuationColor, h.material.attenuationDistance) : vec3(0.0);
+                origin = x + (dot(dir, ng) > 0.0 ? ng : -ng) * eps;
+                if ((pc.flags & 1u) != 0u && events >= 2u) {
+                    // Russian roulette by path throughput; survivors are reweighted (unbiased).
+                    float survive = min(1.0, max(throughput.x, max(throughput.y, throughput.z)));
+                    if (rngNextFloat(rng) >= survive) break;
+                    flux /= survive;
+                    throughput /= survive;
+                }
+                continue;
+            }
+        }
+        if (events == 0u) break;   // direct light, not a caustic
+        vec3 nFacing = dot(h.shadingNormal, dir) < 0.0 ? h.shadingNormal : -h.shadingNormal;
+        vec3 fluxBsdf = flux * h.baseColor * kInvPi;
+        uint slot = atomicAdd(stats[kStatStoredHitAttempts], 1u);
+        if (slot < pc.maxStoredHits) {
+            hits[slot].position = x;
+            hits[slot].objectId = h.objectId;
+            hits[slot].normal = nFacing;
+            hits[slot].light = m.light;
+            hits[slot].fluxBsdf = fluxBsdf;
+            hits[slot].pad = 0.0;
+        }
+        splatFirstType(x, nFacing, h.objectId, fluxBsdf);
+        break;
+    }
+}
