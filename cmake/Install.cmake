@@ -3,11 +3,15 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 install(DIRECTORY rhi/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-foreach(dir engine/include passes/include)
-  if(EXISTS "${CMAKE_CURRENT_SOURCE_DIR}/${dir}")
+# Every library's public include folder, plus the math headers shared by C++, GLSL and HLSL
+# (installed as include/common/*.h, the path the C++ side includes them by).
+file(GLOB engineIncludeDirs LIST_DIRECTORIES true "${CMAKE_CURRENT_SOURCE_DIR}/engine/*/include")
+foreach(dir ${engineIncludeDirs} "${CMAKE_CURRENT_SOURCE_DIR}/passes/include")
+  if(IS_DIRECTORY "${dir}")
     install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   endif()
 endforeach()
+install(DIRECTORY shaders/common DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 get_property(causticsInstallTargets GLOBAL PROPERTY CAUSTICS_INSTALL_TARGETS)
 install(TARGETS ${causticsInstallTargets} EXPORT causticsTargets

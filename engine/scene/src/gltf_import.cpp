@@ -366,6 +366,28 @@ Result<std::vector<unsigned char>> readFile(const std::string& path) {
     return bytes;
 }
 
+// tinygltf converts "extras"/"extensions" to tinygltf::Value recursively: a hostile file nested
+// thousands deep would overflow the stack. Refuse such nesting before parsing.
+constexpr int kMaxJsonDepth = 256;
+bool jsonTooDeep(const unsigned char* p, size_t n) {
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < n; ++i) {
+        unsigned char c = p[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) return true;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return false;
+}
+
 Result<Scene> loadUnguarded(const std::string& path, const LoadOptions& options) {
     CAUSTICS_TRY(std::vector<unsigned char> bytes, readFile(path));
     std::filesystem::path fsPath(path);
@@ -375,6 +397,14 @@ Result<Scene> loadUnguarded(const std::string& path, const LoadOptions& options)
     if (binary && (bytes.size() < 4 || std::memcmp(bytes.data(), "glTF", 4) != 0))
         return makeError("is not a binary glTF file (no 'glTF' magic at the start)");
     if (bytes.size() > 0xFFFFFFFFull) return makeError("is larger than 4 GiB");
+    size_t jsonBegin = binary ? 20 : 0, jsonLength = bytes.size();
+    if (binary && bytes.size() >= 20) {   // GLB: 12-byte header, then the JSON chunk's length and type
+        uint32_t chunk = 0;
+        std::memcpy(&chunk, bytes.data() + 12, 4);
+        jsonLength = std::min<size_t>(chunk, bytes.size() - 20);
+    }
+    if (jsonBegin <= bytes.size() && jsonTooDeep(bytes.data() + jsonBegin, std::min(jsonLength, bytes.size() - jsonBegin)))
+        return makeError("invalid JSON: nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
 
     tinygltf::TinyGLTF loader;
     ImageContext imageContext{&options, {}};

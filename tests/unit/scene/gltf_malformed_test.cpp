@@ -140,6 +140,14 @@ TEST_F(GltfMalformed, TruncatedGlbIsReported) {
     EXPECT_EQ(scene.message().rfind((dir / "cut.glb").string(), 0), 0u) << scene.message();
 }
 
+TEST_F(GltfMalformed, HostileJsonNestingIsRefusedBeforeParsing) {
+    std::string text = asset.gltf.dump();
+    text.insert(text.size() - 1, ",\"extras\":" + std::string(100000, '[') + std::string(100000, ']'));
+    writeBytes(dir / "tri.bin", asset.bin);
+    writeText(dir / "deep.gltf", text);
+    expectError((dir / "deep.gltf").string(), "nesting deeper than 256 levels");
+}
+
 TEST_F(GltfMalformed, GlbWithoutMagicIsReported) {
     writeText(dir / "text.glb", "this is not a binary glTF");
     expectError((dir / "text.glb").string(), "no 'glTF' magic");
