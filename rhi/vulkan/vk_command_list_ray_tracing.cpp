@@ -110,6 +110,10 @@ void VulkanCommandList::buildTopLevel(const AccelStructHandle& tlas, std::span<c
                                                 .setMemory(MemoryType::Upload)
                                                 .setDebugName("TLAS instances"));
     if (!upload) return;
+    if (!upload->mappedData()) {
+        recordError("buildTopLevel: the instance upload buffer has no host mapping");
+        return;
+    }
     if (!instances.empty()) std::memcpy(upload->mappedData(), instances.data(), instances.size_bytes());
     buildTopLevelFromBuffer(tlas, upload, 0, uint32_t(instances.size()), update);
 }

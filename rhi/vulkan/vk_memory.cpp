@@ -97,7 +97,11 @@ Result<MemoryAllocation> MemoryAllocator::allocate(const VkMemoryRequirements& r
     };
     for (size_t i = 0; i < blocks_.size(); ++i) {
         Block& b = blocks_[i];
-        if (b.memory == VK_NULL_HANDLE || b.memoryType != type || b.isImage != isImage) continue;
+        // Host-visible requests need a mapped block: on UMA devices (lavapipe) one memory type serves
+        // DeviceLocal and Upload/Readback alike, and only blocks made for the latter are mapped.
+        if (b.memory == VK_NULL_HANDLE || b.memoryType != type || b.isImage != isImage ||
+            (b.mapped != nullptr) != hostVisible)
+            continue;
         if (auto offset = b.ranges->allocate(req.size, req.alignment)) return fill(int32_t(i), *offset);
     }
     auto block = allocateDedicated(kBlockSize, type, hostVisible, "memory block");

@@ -1,5 +1,6 @@
 #include "vk_shader_table.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "vk_buffer.h"
@@ -91,17 +92,16 @@ Result<std::shared_ptr<VulkanShaderTable>> VulkanShaderTable::create(VulkanDevic
     const uint64_t address = alignUp(buffer.value()->deviceAddress(), base);
     const uint64_t start = address - buffer.value()->deviceAddress();
 
-    // Device-local for trace performance; filled through a staging copy once, at creation.
+    // Device-local for trace performance, filled once at creation with vkCmdUpdateBuffer (at most
+    // 65536 bytes per call, spec "Updating Buffers"; tables are small, so no staging buffer is needed).
     Status uploaded = device.executeImmediate([&](VulkanCommandList& list) {
-        BufferHandle staging = list.allocateTransient(BufferDesc()
-                                                          .setByteSize(image.bytes.size())
-                                                          .setUsage(BufferUsage::CopySource)
-                                                          .setMemory(MemoryType::Upload)
-                                                          .setDebugName("shader table staging"));
-        if (!staging) return;
-        std::memcpy(staging->mappedData(), image.bytes.data(), image.bytes.size());
         list.barrier(BufferBarrier{table->buffer_, ResourceState::Undefined, ResourceState::CopyDest});
-        list.copyBuffer(table->buffer_, start, staging, 0, image.bytes.size());
+        constexpr uint64_t kMaxUpdate = 65536;
+        for (uint64_t done = 0; done < image.bytes.size(); done += kMaxUpdate) {
+            const uint64_t bytes = std::min<uint64_t>(kMaxUpdate, image.bytes.size() - done);
+            vkCmdUpdateBuffer(list.commandBuffer(), toVk(table->buffer_)->handle(), start + done, bytes,
+                              image.bytes.data() + done);
+        }
         list.barrier(BufferBarrier{table->buffer_, ResourceState::CopyDest, ResourceState::ShaderTable});
     });
     if (!uploaded) return uploaded.error();

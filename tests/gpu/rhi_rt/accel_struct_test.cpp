@@ -17,8 +17,8 @@ constexpr uint32_t kRays = 2000;
 // Same reasoning as the triangle test: GPU float traversal vs double CPU barycentrics.
 constexpr double kEdgeEpsilon = 1e-4;
 
-// Instance i sits in cell (i % kGridX, i / kGridX) at a pseudo-random height; `moved` shifts it inside
-// its cell (quads are 0.4 wide, shifts at most 0.3, so neighbours never overlap) and turns it.
+// Instance i sits in cell (i % kGridX, i / kGridX) at a pseudo-random height; `moved` shifts it by up
+// to 0.3 and turns it, so a moved quad (reach 0.2 * sqrt 2 from its centre) may overlap its neighbours.
 Transform cellTransform(uint32_t i, bool moved) {
     const double cx = double(i % kGridX) + 0.5, cy = double(i / kGridX) + 0.5;
     const double z = double((i * 2654435761u) % 1000) / 500.0;
@@ -27,7 +27,8 @@ Transform cellTransform(uint32_t i, bool moved) {
     return makeTransform(0, 0, 0.1 * double(i % 5), {1, 1, 1}, {cx + dx, cy + dy, z + 0.5});
 }
 
-// Vertical rays at random (x, y) over the grid; each can only hit the instance of its own cell.
+// Vertical rays at random (x, y) over the grid; each can only hit instances of its own cell or of the 8
+// around it (the CPU reference tests those nine).
 RayList gridRays(std::vector<std::vector<uint32_t>>& candidates) {
     std::mt19937 rng(77);
     std::uniform_real_distribution<double> x(0.0, kGridX), y(0.0, kGridY);
@@ -35,7 +36,14 @@ RayList gridRays(std::vector<std::vector<uint32_t>>& candidates) {
     for (uint32_t r = 0; r < kRays; ++r) {
         const double px = x(rng), py = y(rng);
         rays.add({px, py, 10.0}, {0, 0, -1}, 0.0f, 100.0f);
-        candidates.push_back({uint32_t(py) * kGridX + uint32_t(px)});
+        std::vector<uint32_t> near;
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int cx = int(px) + dx, cy = int(py) + dy;
+                if (cx >= 0 && cy >= 0 && cx < int(kGridX) && cy < int(kGridY)) near.push_back(uint32_t(cy) * kGridX + uint32_t(cx));
+            }
+        }
+        candidates.push_back(std::move(near));
     }
     return rays;
 }

@@ -13,6 +13,10 @@ BufferHandle makeUploadBuffer(IDevice& device, const void* data, uint64_t bytes,
         ADD_FAILURE() << buffer.message();
         return nullptr;
     }
+    if (!buffer.value()->mappedData()) {
+        ADD_FAILURE() << "upload buffer '" << buffer.value()->desc().debugName << "' has no host mapping";
+        return nullptr;
+    }
     std::memcpy(buffer.value()->mappedData(), data, bytes);
     return buffer.value();
 }

@@ -41,6 +41,10 @@ StateObjectDesc recordStateObjectDesc(const BindingLayoutHandle& layout) {
 }
 
 TEST_F(RayTracingTest, InstancesSelectHitRecordsAndEachShowsItsLocalConstant) {
+    const CpuMesh quad = makeQuad(0.5f);
+    std::vector<BufferHandle> keep;
+    AccelStructHandle blas = makeTriangleBlas(dev(), quad, AccelBuildFlags::PreferFastTrace, keep);
+    ASSERT_TRUE(blas);
     BindingLayoutHandle layout = makeLayout(dev(), 0);
     auto so = dev().createStateObject(recordStateObjectDesc(layout));
     ASSERT_TRUE(so) << so.message();
@@ -51,10 +55,6 @@ TEST_F(RayTracingTest, InstancesSelectHitRecordsAndEachShowsItsLocalConstant) {
     auto table = dev().createShaderTable(tableDesc);
     ASSERT_TRUE(table) << table.message();
 
-    const CpuMesh quad = makeQuad(0.5f);
-    std::vector<BufferHandle> keep;
-    AccelStructHandle blas = makeTriangleBlas(dev(), quad, AccelBuildFlags::PreferFastTrace, keep);
-    ASSERT_TRUE(blas);
     std::vector<InstanceDesc> instances(4);
     for (uint32_t i = 0; i < 4; ++i) {
         instances[i].transform[0][3] = kQuadSpacing * float(i) + 0.5f;

@@ -1,0 +1,15 @@
+#pragma once
+// Chooses the scene the sample renders: a built-in one, any glTF file, or "modified Sponza" (a glTF
+// plus the caustic objects and lights).
+#include <string>
+
+#include "cli_options.h"
+#include "scene/scene.h"
+
+namespace caustics::sample {
+
+Result<scene::Scene> loadSceneFromOptions(const CliOptions& options);
+// The camera to render: the scene's first camera (or a default view of it), overridden by --camera.
+scene::Camera cameraFromOptions(const scene::Scene& scene, const CliOptions& options);
+
+}  // namespace caustics::sample
