@@ -66,6 +66,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     out.secondTypeBuffer = f.radiance2;
     out.hits = f.hits;
     out.stats = f.stats;
+    out.spheres = f.spheres;
     out.mapPositions = f.mapPositions;
     out.plan = std::move(f.plan);
     return out;

@@ -95,6 +95,7 @@ struct CausticOutputs {
     rg::RgBuffer secondTypeBuffer;
     rg::RgBuffer hits;          // CausticHit[maxStoredHits]
     rg::RgBuffer stats;         // uint32[kStatCount]
+    rg::RgBuffer spheres;       // CausticSphere[W x H] (invalid when the second type did not run)
     rg::RgTexture mapPositions; // RGBA32F array, one layer per planned map (invalid if none)
     CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped
     bool floatAtomics = true;   // false: the buffers hold fixed-point uint (kFixedPointScale)

@@ -1,0 +1,140 @@
+#include "caustic_harness.h"
+
+#include <cstring>
+
+#include "caustics/frame_context.h"
+#include "caustics/scene_bindings.h"
+#include "gbuffer/gbuffer_pass.h"
+#include "scene/gpu_scene.h"
+
+namespace caustics::test {
+namespace {
+
+using namespace caustics::rhi;
+
+Result<BufferHandle> readbackBuffer(IDevice& d, uint64_t bytes) {
+    return d.createBuffer(BufferDesc().setByteSize(std::max<uint64_t>(bytes, 4)).setUsage(BufferUsage::CopyDest)
+                              .setMemory(MemoryType::Readback).setDebugName("harness readback"));
+}
+
+template <typename T>
+std::vector<T> fetch(IDevice& d, const BufferHandle& b, size_t count) {
+    std::vector<T> v(count);
+    if (count && !d.readBuffer(b, v.data(), count * sizeof(T))) v.clear();
+    return v;
+}
+
+std::vector<glm::vec3> rgb(const std::vector<glm::vec4>& v) {
+    std::vector<glm::vec3> out(v.size());
+    for (size_t i = 0; i < v.size(); ++i) out[i] = glm::vec3(v[i]);
+    return out;
+}
+
+}  // namespace
+
+Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
+                               uint32_t height, const CausticsSettings& settings, uint32_t frames) {
+    CAUSTICS_TRY(scene::GpuScene gpuScene, scene::GpuScene::create(device, scene));
+    CAUSTICS_TRY(SceneBindings bindings, SceneBindings::create(device, gpuScene, scene));
+    BindingLayoutDesc cl;
+    cl.setVisibility(ShaderStage::All).add(0, BindingType::ConstantBuffer);
+    CAUSTICS_TRY(BindingLayoutHandle cameraLayout, device.createBindingLayout(cl));
+    CAUSTICS_TRY(BufferHandle cameraBuffer, device.createBuffer(BufferDesc().setByteSize(sizeof(CameraConstants))
+                                                                    .setUsage(BufferUsage::Constant)
+                                                                    .setMemory(MemoryType::Upload)));
+    CAUSTICS_TRY(BindingSetHandle cameraSet,
+                 device.createBindingSet(BindingSetDesc().add(BindingSetItem::constantBuffer(0, cameraBuffer)), cameraLayout));
+    CAUSTICS_TRY(GBufferPass gbufferPass, GBufferPass::create(device, bindings.layout, cameraLayout));
+    CAUSTICS_TRY(CausticResources resources, CausticResources::create(device));
+
+    CausticRun run;
+    run.width = width;
+    run.height = height;
+    const uint64_t pixels = uint64_t(width) * height;
+    rg::RenderGraph graph;
+    glm::mat4 prevViewProj(1.0f);
+    for (uint32_t frame = 0; frame < frames; ++frame) {
+        graph.reset();
+        FrameContext fc;
+        fc.device = &device;
+        fc.scene = &scene;
+        fc.gpuScene = &gpuScene;
+        fc.sceneBindings = &bindings;
+        fc.settings = &settings;
+        fc.camera = makeCameraConstants(camera, width, height, frame, frame ? &prevViewProj : nullptr);
+        prevViewProj = fc.camera.viewProj;
+        std::memcpy(cameraBuffer->mappedData(), &fc.camera, sizeof(CameraConstants));
+        fc.cameraBuffer = cameraBuffer;
+        fc.cameraLayout = cameraLayout;
+        fc.cameraSet = cameraSet;
+        fc.width = width;
+        fc.height = height;
+        fc.frameIndex = frame;
+        GBuffer g = gbufferPass.addToGraph(graph, fc);
+        CausticFrameInputs in;
+        in.device = &device;
+        in.scene = &scene;
+        in.gpuScene = &gpuScene;
+        in.sceneBindings = &bindings;
+        in.gbuffer = g;
+        in.camera = fc.camera;
+        in.settings = settings;
+        in.frameIndex = frame;
+        CAUSTICS_TRY(CausticOutputs out, addCausticPasses(graph, resources, in));
+        const bool last = frame + 1 == frames;
+        if (last) {
+            for (rg::RgTexture t : {out.firstType, out.secondType, out.radiance, g.linearDepth, g.objectId})
+                graph.markOutput(t, ResourceState::CopySource);
+            graph.markOutput(out.stats, ResourceState::CopySource);
+            if (out.hits.valid()) graph.markOutput(out.hits, ResourceState::CopySource);
+            if (out.spheres.valid()) graph.markOutput(out.spheres, ResourceState::CopySource);
+        } else {
+            graph.markOutput(out.radiance);
+        }
+        CAUSTICS_TRY(CommandListHandle cmd, device.createCommandList());
+        cmd->begin();
+        CAUSTICS_CHECK(graph.execute(device, *cmd));
+        cmd->end();
+        CAUSTICS_TRY(uint64_t fence, device.submit(cmd));
+        CAUSTICS_CHECK(device.waitForFence(fence));
+        if (!last) continue;
+
+        // Read back everything the tests look at.
+        CAUSTICS_TRY(BufferHandle rbFirst, readbackBuffer(device, pixels * 16));
+        CAUSTICS_TRY(BufferHandle rbSecond, readbackBuffer(device, pixels * 16));
+        CAUSTICS_TRY(BufferHandle rbRadiance, readbackBuffer(device, pixels * 16));
+        CAUSTICS_TRY(BufferHandle rbDepth, readbackBuffer(device, pixels * 4));
+        CAUSTICS_TRY(BufferHandle rbId, readbackBuffer(device, pixels * 4));
+        CAUSTICS_TRY(BufferHandle rbStats, readbackBuffer(device, kStatCount * 4));
+        const uint64_t hitBytes = uint64_t(settings.maxStoredHits) * sizeof(CausticHit);
+        CAUSTICS_TRY(BufferHandle rbHits, readbackBuffer(device, out.hits.valid() ? hitBytes : 4));
+        CAUSTICS_TRY(BufferHandle rbSpheres, readbackBuffer(device, out.spheres.valid() ? pixels * sizeof(CausticSphere) : 4));
+        CAUSTICS_TRY(CommandListHandle copy, device.createCommandList());
+        copy->begin();
+        copy->copyTextureToBuffer(rbFirst, 0, graph.texture(out.firstType));
+        copy->copyTextureToBuffer(rbSecond, 0, graph.texture(out.secondType));
+        copy->copyTextureToBuffer(rbRadiance, 0, graph.texture(out.radiance));
+        copy->copyTextureToBuffer(rbDepth, 0, graph.texture(g.linearDepth));
+        copy->copyTextureToBuffer(rbId, 0, graph.texture(g.objectId));
+        copy->copyBuffer(rbStats, 0, graph.buffer(out.stats), 0, kStatCount * 4);
+        if (out.hits.valid()) copy->copyBuffer(rbHits, 0, graph.buffer(out.hits), 0, hitBytes);
+        if (out.spheres.valid()) copy->copyBuffer(rbSpheres, 0, graph.buffer(out.spheres), 0, pixels * sizeof(CausticSphere));
+        copy->end();
+        CAUSTICS_TRY(uint64_t copyFence, device.submit(copy));
+        CAUSTICS_CHECK(device.waitForFence(copyFence));
+        run.firstType = rgb(fetch<glm::vec4>(device, rbFirst, pixels));
+        run.secondType = rgb(fetch<glm::vec4>(device, rbSecond, pixels));
+        run.radiance = rgb(fetch<glm::vec4>(device, rbRadiance, pixels));
+        run.linearDepth = fetch<float>(device, rbDepth, pixels);
+        run.objectId = fetch<uint32_t>(device, rbId, pixels);
+        run.stats = fetch<uint32_t>(device, rbStats, kStatCount);
+        if (out.hits.valid())
+            run.hits = fetch<CausticHit>(device, rbHits, std::min<uint64_t>(run.stats[kStatStoredHitAttempts], settings.maxStoredHits));
+        if (out.spheres.valid()) run.spheres = fetch<CausticSphere>(device, rbSpheres, pixels);
+        run.plan = out.plan;
+    }
+    CAUSTICS_CHECK(device.waitIdle());
+    return run;
+}
+
+}  // namespace caustics::test

@@ -1,0 +1,34 @@
+#pragma once
+// Runs one or more frames of the G-buffer pass and the caustic passes (caustic_passes.h) for a scene
+// and reads the results back: radiance images, statistics, stored hits and spheres.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "caustics/caustic_passes.h"
+#include "rhi/rhi.h"
+#include "scene/scene.h"
+
+namespace caustics::test {
+
+struct CausticRun {
+    uint32_t width = 0, height = 0;
+    std::vector<glm::vec3> firstType, secondType, radiance;   // row 0 = top
+    std::vector<uint32_t> stats;                             // kStatCount words
+    std::vector<CausticHit> hits;                            // min(attempts, maxStoredHits)
+    std::vector<CausticSphere> spheres;                      // one per pixel (secondType on)
+    std::vector<float> linearDepth;
+    std::vector<uint32_t> objectId;
+    CausticMapPlan plan;
+
+    uint32_t raysOfLight(uint32_t light) const { return stats[kStatRaysPerLight + light]; }
+    const glm::vec3& at(const std::vector<glm::vec3>& img, uint32_t x, uint32_t y) const { return img[size_t(y) * width + x]; }
+};
+
+// frames > 1 runs the graph repeatedly (frame index 0..frames-1) and returns the last frame.
+Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, const scene::Camera& camera,
+                               uint32_t width, uint32_t height, const CausticsSettings& settings, uint32_t frames = 1);
+
+// Sum of `images` over several independent frames (different seeds) divided by their count.
+}  // namespace caustics::test
