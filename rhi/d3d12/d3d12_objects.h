@@ -1,5 +1,6 @@
 #pragma once
 // The backend's implementations of the RHI object interfaces: plain holders of D3D12 objects.
+#include <array>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -7,6 +8,7 @@
 
 #include "d3d12_headers.h"
 #include "descriptor_heaps.h"
+#include "graphics_pipeline_desc.h"
 #include "root_signature_layout.h"
 #include "rhi/rhi.h"
 #include "shader_table_image.h"
@@ -78,6 +80,16 @@ public:
     const ComputePipelineDesc& desc() const override { return desc_; }
 };
 
+class GraphicsPipeline final : public IGraphicsPipeline {
+public:
+    GraphicsPipelineDesc desc_;
+    RootBinding root;
+    ComPtr<ID3D12PipelineState> pso;
+    D3D_PRIMITIVE_TOPOLOGY topology = D3D_PRIMITIVE_TOPOLOGY_TRIANGLELIST;
+    std::array<uint32_t, kMaxVertexBufferSlots> strides{};   // per vertex-buffer slot
+    const GraphicsPipelineDesc& desc() const override { return desc_; }
+};
+
 class AccelStruct final : public IAccelStruct {
 public:
     AccelStructDesc desc_;
@@ -122,6 +134,11 @@ public:
     std::vector<uint8_t> written;      // resolved at least once since reset
     uint32_t capacity() const override { return count; }
 };
+
+class Device;
+// Root signature (layout + created object) for a pipeline's bindings (d3d12_pipelines.cpp).
+Result<RootBinding> makeRootBinding(Device& device, const PipelineBindings& bindings, RootSignatureKind kind,
+                                    const std::string& name);
 
 // Creates a committed buffer (helper shared by several files).
 Result<ComPtr<ID3D12Resource>> createCommittedBuffer(ID3D12Device* device, uint64_t bytes, D3D12_HEAP_TYPE heap,

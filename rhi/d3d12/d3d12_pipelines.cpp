@@ -1,5 +1,5 @@
-// Compute pipelines (root signature from the RHI bindings + PSO). Graphics pipelines are not
-// implemented in the D3D12 backend yet (docs/d3d12.md).
+// Compute pipelines (root signature from the RHI bindings + PSO); graphics pipelines are in
+// d3d12_graphics_pipeline.cpp.
 #include "d3d12_device.h"
 #include "d3d12_objects.h"
 
@@ -31,11 +31,6 @@ Result<ComputePipelineHandle> Device::createComputePipeline(const ComputePipelin
         return makeError("d3d12: CreateComputePipelineState failed for '" + desc.debugName + "'");
     setDebugName(p->pso.get(), desc.debugName);
     return ComputePipelineHandle(p);
-}
-
-Result<GraphicsPipelineHandle> Device::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
-    return makeError("d3d12 backend: graphics pipelines are not implemented yet ('" + desc.debugName +
-                     "'); use --backend vulkan for rasterization passes");
 }
 
 }  // namespace caustics::rhi::d3d12

@@ -52,6 +52,18 @@ Result<RootSignatureLayout> rootSignatureLayoutFromBindings(std::span<const Bind
         out.samplerTableParameter.push_back(samplerIndex);
         out.tables.push_back(std::move(table).value());
     }
+    if (kind == RootSignatureKind::Graphics) {
+        // SV_InstanceID starts at 0 whatever StartInstanceLocation is (unlike gl_InstanceIndex), and
+        // no shader model before 6.8 reads the draw's base values, so the command list passes them.
+        RootParameterLayout p;
+        p.kind = RootParameterLayout::Kind::Constants;
+        p.shaderRegister = 0;
+        p.registerSpace = kDrawParametersSpace;
+        p.num32BitValues = 2;
+        p.visibility = D3D12_SHADER_VISIBILITY_VERTEX;
+        out.drawParametersParameter = int32_t(out.parameters.size());
+        out.parameters.push_back(std::move(p));
+    }
     return out;
 }
 

@@ -20,6 +20,9 @@ namespace caustics::rhi::d3d12 {
 
 constexpr uint32_t kPushConstantSpace = 999;
 constexpr uint32_t kLocalDataSpace = 1000;
+// Graphics only: {base vertex, first instance} of the current draw as root constants in b0, space998
+// (HLSL: `ConstantBuffer<DrawParameters> drawParams : register(b0, space998);`), set at every draw.
+constexpr uint32_t kDrawParametersSpace = 998;
 constexpr uint32_t kMaxPushConstantBytes = 128;   // Vulkan's guaranteed minimum; the RHI contract
 
 enum class RootSignatureKind : uint8_t {
@@ -49,6 +52,7 @@ struct RootSignatureLayout {
     RootSignatureKind kind = RootSignatureKind::Compute;
     std::vector<RootParameterLayout> parameters;
     int32_t pushConstantParameter = -1;
+    int32_t drawParametersParameter = -1;   // Graphics: the last parameter
     // Per binding layout: root parameter index of its resource / sampler table, -1 if it has none.
     std::vector<int32_t> resourceTableParameter, samplerTableParameter;
     std::vector<DescriptorTableLayout> tables;   // per binding layout

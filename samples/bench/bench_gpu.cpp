@@ -1,6 +1,7 @@
 #include "bench_gpu.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 namespace caustics::bench {
@@ -12,6 +13,10 @@ Result<DeviceHandle> createBenchDevice(const BenchOptions& options) {
     desc.backend = options.backend;
     desc.enableValidation = options.validation;
     desc.requireRayTracing = true;
+    // Keep the table readable: the loader's and layers' info lines are dropped, problems are shown.
+    desc.validationCallback = [](LogLevel level, std::string_view message) {
+        if (level >= LogLevel::Warning) std::fprintf(stderr, "validation: %.*s\n", int(message.size()), message.data());
+    };
     return createDevice(desc);
 }
 

@@ -68,7 +68,8 @@ Status planBarriers(const GraphDesc& graph, CompiledPlan& plan) {
             Track& t = tracks[use.resource];
             ResourceKind kind = graph.resources[use.resource].kind;
             if (!t.live) {
-                planned.barriers.push_back({use.resource, kind, ResourceState::Undefined, use.state, true});
+                bool aliasing = use.resource < plan.sharesMemory.size() && plan.sharesMemory[use.resource];
+                planned.barriers.push_back({use.resource, kind, ResourceState::Undefined, use.state, true, aliasing});
             } else if (needsBarrier(t, use.state, use.writes)) {
                 planned.barriers.push_back({use.resource, kind, t.state, use.state, false});
             }

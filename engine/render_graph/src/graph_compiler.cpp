@@ -165,6 +165,13 @@ Result<CompiledPlan> compileGraph(const GraphDesc& g, const IMemorySizer& sizer)
     AliasPlacement placement = placeAliased(requests);
     for (size_t i = 0; i < requests.size(); ++i) plan.heapOffset[requestResource[i]] = placement.offsets[i];
     plan.heapSize = placement.heapSize;
+    plan.sharesMemory.assign(n, false);
+    for (size_t i = 0; i < requests.size(); ++i)
+        for (size_t j = i + 1; j < requests.size(); ++j) {
+            uint64_t a = placement.offsets[i], b = placement.offsets[j];
+            if (a < b + requests[j].size && b < a + requests[i].size)
+                plan.sharesMemory[requestResource[i]] = plan.sharesMemory[requestResource[j]] = true;
+        }
 
     CAUSTICS_CHECK(detail::planBarriers(g, plan));
     return plan;

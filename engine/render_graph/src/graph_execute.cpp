@@ -102,8 +102,10 @@ void recordBarriers(rhi::ICommandList& cmd, const std::vector<PlannedBarrier>& p
     std::vector<rhi::AccelStructBarrier> accels;
     for (const PlannedBarrier& b : planned) {
         switch (b.kind) {
-            case ResourceKind::Texture: textures.push_back({phys.textures[b.resource], b.before, b.after, {}}); break;
-            case ResourceKind::Buffer: buffers.push_back({phys.buffers[b.resource], b.before, b.after}); break;
+            case ResourceKind::Texture:
+                textures.push_back({phys.textures[b.resource], b.before, b.after, {}, b.aliasing});
+                break;
+            case ResourceKind::Buffer: buffers.push_back({phys.buffers[b.resource], b.before, b.after, b.aliasing}); break;
             case ResourceKind::AccelStruct: accels.push_back({phys.accelStructs[b.resource], b.before, b.after}); break;
         }
     }

@@ -27,7 +27,7 @@ std::string dotEscape(const std::string& s) {
 std::string barrierText(const GraphDesc& g, const PlannedBarrier& b) {
     std::string s = std::string(resourceKindName(b.kind)) + " '" + g.resources[b.resource].name + "' " +
                     rhi::resourceStateName(b.before) + " -> " + rhi::resourceStateName(b.after);
-    if (b.activation) s += " (activate)";
+    if (b.activation) s += b.aliasing ? " (activate, aliased memory)" : " (activate)";
     return s;
 }
 

@@ -23,11 +23,17 @@ struct TextureBarrier {
     ResourceState before = ResourceState::Undefined;
     ResourceState after = ResourceState::Common;
     TextureSubresources subresources;
+    // The texture's memory held other (aliased) resources until now, e.g. a render-graph transient
+    // placed over an earlier one: the transition must wait for all earlier work on that memory
+    // (D3D12 aliasing barrier; Vulkan: src stage ALL_COMMANDS, src access MEMORY_WRITE). Added by the
+    // render graph; a plain Undefined source waits for nothing.
+    bool aliasing = false;
 };
 struct BufferBarrier {
     BufferHandle buffer;
     ResourceState before = ResourceState::Undefined;
     ResourceState after = ResourceState::Common;
+    bool aliasing = false;   // as TextureBarrier::aliasing
 };
 // Orders AS builds against later builds and traces (D3D12: UAV barrier on the AS).
 struct AccelStructBarrier {

@@ -54,7 +54,7 @@ TEST(D3D12RootSignature, VersionedDescMirrorsTheLayout) {
     RootSignatureDescStorage storage(*l);
     const D3D12_VERSIONED_ROOT_SIGNATURE_DESC& d = storage.desc();
     EXPECT_EQ(d.Version, D3D_ROOT_SIGNATURE_VERSION_1_1);
-    ASSERT_EQ(d.Desc_1_1.NumParameters, 4u);
+    ASSERT_EQ(d.Desc_1_1.NumParameters, 5u);   // + draw parameters (graphics)
     EXPECT_EQ(d.Desc_1_1.Flags, D3D12_ROOT_SIGNATURE_FLAG_ALLOW_INPUT_ASSEMBLER_INPUT_LAYOUT);
     EXPECT_EQ(d.Desc_1_1.pParameters[0].ParameterType, D3D12_ROOT_PARAMETER_TYPE_32BIT_CONSTANTS);
     EXPECT_EQ(d.Desc_1_1.pParameters[0].Constants.RegisterSpace, 999u);
@@ -66,6 +66,24 @@ TEST(D3D12RootSignature, VersionedDescMirrorsTheLayout) {
     EXPECT_EQ(pass.DescriptorTable.pDescriptorRanges[1].RangeType, D3D12_DESCRIPTOR_RANGE_TYPE_UAV);
     EXPECT_EQ(pass.DescriptorTable.pDescriptorRanges[1].RegisterSpace, 1u);
     EXPECT_EQ(pass.DescriptorTable.pDescriptorRanges[1].OffsetInDescriptorsFromTableStart, 1u);
+}
+
+TEST(D3D12RootSignature, GraphicsSignatureEndsWithDrawParametersInSpace998) {
+    auto l = rootSignatureLayoutFromBindings(twoLayouts(), 8, RootSignatureKind::Graphics);
+    ASSERT_TRUE(l.ok());
+    ASSERT_EQ(l->drawParametersParameter, int32_t(l->parameters.size()) - 1);
+    const RootParameterLayout& p = l->parameters.back();
+    EXPECT_EQ(p.kind, RootParameterLayout::Kind::Constants);
+    EXPECT_EQ(p.registerSpace, 998u);
+    EXPECT_EQ(p.shaderRegister, 0u);
+    EXPECT_EQ(p.num32BitValues, 2u);
+}
+
+TEST(D3D12RootSignature, ComputeSignatureHasNoDrawParameters) {
+    auto l = rootSignatureLayoutFromBindings(twoLayouts(), 8, RootSignatureKind::Compute);
+    ASSERT_TRUE(l.ok());
+    EXPECT_EQ(l->drawParametersParameter, -1);
+    EXPECT_EQ(l->parameters.size(), 4u);
 }
 
 TEST(D3D12RootSignature, LocalSignatureHoldsLocalDataAsRootConstantsInSpace1000) {

@@ -61,6 +61,37 @@ TEST(RenderGraphAliasing, ResourcesWithDisjointLifetimesShareMemory) {
     expectNoLiveOverlap(plan);
 }
 
+TEST(RenderGraphAliasing, ActivationInSharedMemoryWaitsForEarlierUsers) {
+    // c takes over a's memory: its first barrier must be an aliasing barrier; b has its own range.
+    RenderGraph g;
+    RgTexture a, b, c;
+    g.addPass("a", [&](PassBuilder& pb) {
+        a = pb.write(pb.createTexture("a", texDesc(128, 128)), Access::StorageWrite);
+        return [](PassContext&) {};
+    });
+    g.addPass("b", [&](PassBuilder& pb) {
+        pb.read(a);
+        b = pb.write(pb.createTexture("b", texDesc(128, 128)), Access::StorageWrite);
+        return [](PassContext&) {};
+    });
+    g.addPass("c", [&](PassBuilder& pb) {
+        pb.read(b);
+        c = pb.write(pb.createTexture("c", texDesc(128, 128)), Access::StorageWrite);
+        return [](PassContext&) {};
+    });
+    g.markOutput(c);
+    ASSERT_TRUE(g.compile(FakeMemorySizer()).ok());
+    auto activation = [&](uint32_t pass, RgTexture t) {
+        for (const PlannedBarrier& pb : g.plan()->findPass(pass)->barriers)
+            if (pb.resource == t.index && pb.activation) return pb;
+        ADD_FAILURE() << "no activation barrier";
+        return PlannedBarrier{};
+    };
+    EXPECT_TRUE(activation(2, c).aliasing);
+    EXPECT_TRUE(activation(0, a).aliasing) << "a's range is reused by c (next frame a follows c)";
+    EXPECT_FALSE(activation(1, b).aliasing);
+}
+
 TEST(RenderGraphAliasing, OutputTransientIsNotReusedAfterItsLastPass) {
     RenderGraph g;
     RgTexture out;

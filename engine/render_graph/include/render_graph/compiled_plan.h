@@ -19,6 +19,9 @@ struct PlannedBarrier {
     // First use of a transient: its contents are undefined (and its memory may have held another
     // transient until now), so the transition starts from Undefined.
     bool activation = false;
+    // Activation of a transient whose heap range other transients also use (at other times): the
+    // barrier must also wait for earlier work on that memory (rhi::TextureBarrier::aliasing).
+    bool aliasing = false;
 };
 
 struct PlannedPass {
@@ -51,6 +54,7 @@ struct CompiledPlan {
     std::vector<rhi::BufferDesc> bufferDescs;
     std::vector<rhi::MemoryRequirements> memory;  // per transient placed in the heap
     std::vector<std::optional<uint64_t>> heapOffset;  // per resource; set for heap-placed transients
+    std::vector<bool> sharesMemory;   // per resource: its heap range overlaps another transient's
     uint64_t heapSize = 0;
     std::vector<Dependency> dependencies;
 
