@@ -15,17 +15,18 @@ D3D12_TEXTURE_ADDRESS_MODE addressMode(AddressMode m) {
     }
 }
 
-// Buffer views: structured when the buffer has a stride, raw (R32_TYPELESS, 4-byte elements) otherwise.
+// Storage-buffer views are always raw (ByteAddressBuffer, R32_TYPELESS, 4-byte elements), whatever
+// BufferDesc::structStride says: an HLSL declaration must match the view kind, and the HLSL of every
+// pass (shaders/d3d12) reads std430-laid-out data through ByteAddressBuffer so that one shader works
+// with any buffer (headers + arrays, float3 members at std430 offsets). structStride is informative.
 void bufferViewShape(const Buffer& b, const BindingSetItem& item, UINT64& first, UINT& count, UINT& stride,
                      DXGI_FORMAT& format, bool& raw) {
     const uint64_t range = item.range ? item.range : b.desc_.byteSize - item.offset;
-    stride = b.desc_.structStride;
-    raw = stride == 0;
-    const uint32_t element = raw ? 4 : stride;
-    first = item.offset / element;
-    count = UINT(range / element);
-    format = raw ? DXGI_FORMAT_R32_TYPELESS : DXGI_FORMAT_UNKNOWN;
-    if (raw) stride = 0;
+    raw = true;
+    stride = 0;
+    first = item.offset / 4;   // raw views address in 4-byte units; the offset must be 16-byte aligned
+    count = UINT(range / 4);
+    format = DXGI_FORMAT_R32_TYPELESS;
 }
 
 Status writeDescriptor(ID3D12Device5* device, const BindingSetItem& item, D3D12_CPU_DESCRIPTOR_HANDLE dst) {

@@ -109,7 +109,9 @@ Status Device::init(const DeviceDesc& desc) {
     if (!found) return makeError("d3d12 backend: no suitable adapter:" + refusals);
 
     caps_.driverName = "D3D12";
-    caps_.shaderFloatAtomicAdd = false;   // needs SM 6.6 and D3D12_OPTIONS11 (headers 1.606 lack it): use uint CAS
+    // HLSL has no float atomic add at any shader model (SM 6.6 adds 64-bit integer atomics and only
+    // bitwise float compare-exchange), so passes take fixed point or a CAS loop (radiance_atomics.hlsli).
+    caps_.shaderFloatAtomicAdd = false;
     caps_.shaderGroupHandleSize = D3D12_SHADER_IDENTIFIER_SIZE_IN_BYTES;
     caps_.shaderGroupHandleAlignment = D3D12_RAYTRACING_SHADER_RECORD_BYTE_ALIGNMENT;
     caps_.shaderGroupBaseAlignment = D3D12_RAYTRACING_SHADER_TABLE_BYTE_ALIGNMENT;

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "rhi/resources.h"
+#include "rhi/result.h"
 
 namespace caustics::rhi::d3d12 {
 

@@ -124,6 +124,10 @@ void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::
         ib.srcAccessMask = src.access;
         ib.dstStageMask = dst.stages;
         ib.dstAccessMask = dst.access;
+        if (b.aliasing) {
+            ib.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+            ib.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+        }
         ib.oldLayout = b.before == ResourceState::Undefined ? VK_IMAGE_LAYOUT_UNDEFINED : src.layout;
         ib.newLayout = dst.layout;
         ib.srcQueueFamilyIndex = ib.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
@@ -144,6 +148,10 @@ void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::
         bb.srcAccessMask = src.access;
         bb.dstStageMask = dst.stages;
         bb.dstAccessMask = dst.access;
+        if (b.aliasing) {
+            bb.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+            bb.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+        }
         bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         bb.buffer = buf->handle();
         bb.offset = 0;

@@ -3,6 +3,7 @@
 // Caustic visibility map raster (paper 3.2, Figure 3): vertex pulling from the scene buffers, one
 // draw per instance (gl_InstanceIndex = scene instance index via firstInstance).
 #define SCENE_NO_TEXTURES
+#define SCENE_NO_TLAS
 #include "scene/scene.glsl"
 #include "caustic_maps/caustic_map.glsl"
 

@@ -3,6 +3,7 @@
 // Shared declarations of the G-buffer raster shaders: scene set 0, camera set 1, one draw per
 // instance with the instance index in a push constant (vertex pulling, no vertex input state).
 #define SCENE_UNIFORM_TEXTURE_INDEX
+#define SCENE_NO_TLAS
 #include "scene/scene.glsl"
 #include "scene/camera.glsl"
 

@@ -6,6 +6,8 @@
 // ray-tracing stage. Define SCENE_NO_TEXTURES to leave the texture array out of a shader, and
 // SCENE_UNIFORM_TEXTURE_INDEX where the material is dynamically uniform (one draw per instance), which
 // drops the nonuniformEXT qualifier (and its SampledImageArrayNonUniformIndexing capability).
+// Raster and compute shaders without ray queries must define SCENE_NO_TLAS (an acceleration-structure
+// type is invalid SPIR-V without a ray-tracing capability).
 //
 //   binding 0  accelerationStructureEXT  sceneTlas        instanceId = instance index
 //   binding 1  float[]                   scenePositions   3 floats per vertex (BLAS input)
@@ -16,7 +18,9 @@
 //   binding 6  lights header + GpuLight[] (caustics/gpu_light.h)
 //   binding 7  sampler                   sceneSampler     linear, repeat
 //   binding 8  texture2D[SCENE_MAX_TEXTURES] sceneTextures RGBA8_SRGB (unused slots: white 1x1)
+#ifndef SCENE_NO_TLAS
 #extension GL_EXT_ray_tracing : enable
+#endif
 #extension GL_EXT_nonuniform_qualifier : enable
 #include "common/lang.h"
 #include "common/fresnel.h"
@@ -72,7 +76,9 @@ struct GpuLight {
     float cosOuter; uint castsCaustics; uint pad0; uint pad1;
 };
 
+#ifndef SCENE_NO_TLAS
 layout(set = SCENE_SET, binding = 0) uniform accelerationStructureEXT sceneTlas;
+#endif
 layout(set = SCENE_SET, binding = 1, std430) readonly buffer ScenePositions { float scenePositions[]; };
 layout(set = SCENE_SET, binding = 2, std430) readonly buffer SceneVertices { GpuVertex sceneVertices[]; };
 layout(set = SCENE_SET, binding = 3, std430) readonly buffer SceneIndices { uint sceneIndices[]; };

@@ -36,7 +36,7 @@ const std::string kOutDir = CAUSTICS_BINARY_DIR;
 bool writeRgb(const std::string& path, const std::vector<float>& rgb, OIIO::TypeDesc type) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) return false;
-    OIIO::ImageSpec spec(int(kSize), int(kSize), 3, type);
+    OIIO::ImageSpec spec{int(kSize), int(kSize), 3, type};
     spec.attribute("compression", "zip");
     if (!out->open(path, spec)) return false;
     bool ok = out->write_image(OIIO::TypeDesc::FLOAT, rgb.data());

@@ -54,6 +54,7 @@ TEST_F(CausticOptics, GlassSphereFocusesAtTheParaxialFocus) {
     ASSERT_GT(gpu.value, 0.0f);
     EXPECT_LE(std::abs(float(gpu.x) + 0.5f - proj.pixel.x), 1.0f);
     EXPECT_LE(std::abs(float(gpu.y) + 0.5f - proj.pixel.y), 1.0f);
+    std::printf("[ measured ] GPU focal peak pixel (%d, %d), paraxial focus projects to (%.2f, %.2f)\n", gpu.x, gpu.y, proj.pixel.x, proj.pixel.y);
 
     reference::ReferenceOptions o;
     o.width = o.height = kSize;
@@ -96,6 +97,7 @@ TEST_F(CausticOptics, GlassSlabTransmitsTheFresnelFractionOfTheFlux) {
             ++count;
         }
     ASSERT_GT(count, 500u);
+    std::printf("[ measured ] slab transmission ratio GPU/Fresnel %.4f over %u pixels\n", sum / count / expected, count);
     EXPECT_NEAR(sum / count / expected, 1.0, 0.02) << "mean " << sum / count << " expected " << expected;
 }
 
@@ -133,6 +135,7 @@ TEST_F(CausticOptics, MetalRingShowsTheNephroidCuspAtHalfTheRadius) {
         ASSERT_GE(p.x, 0);
         glm::vec3 world;
         ASSERT_TRUE(planePoint(pc, uint32_t(p.x), uint32_t(p.y), world));
+        std::printf("[ measured ] %s cusp at x = %.4f (analytic %.4f, footprint %.4f)\n", which ? "CPU" : "GPU", world.x, -0.5f * radius, footprint);
         EXPECT_NEAR(world.x, -0.5f * radius, 2.0f * footprint) << (which ? "CPU reference" : "GPU");
     }
 }

@@ -1,0 +1,110 @@
+// Backward pass (paper 3.3, Figure 5; mirror of shaders/vulkan/backward_trace/backward.rgen): from
+// every camera pixel whose G-buffer surface is specular, trace the specular chain to the first
+// diffuse hit; that hit becomes an integration sphere and this pixel's sphere TLAS instance is written
+// (unused pixels: mask 0).
+#include "scene/scene.hlsli"
+#include "scene/camera.hlsli"
+#include "common/rng.h"
+#include "common/volume.h"
+#include "forward_trace/caustic_hit.hlsli"
+
+struct CameraBlock { CameraConstants camera; };
+ConstantBuffer<CameraBlock> cameraBlock : register(b0, space1);
+Texture2D<uint> gObjectId : register(t1, space1);
+Texture2D<float4> gOptics : register(t2, space1);
+RWByteAddressBuffer spheres : register(u3, space1);
+RWByteAddressBuffer instances : register(u4, space1);   // caustics::rhi::InstanceDesc, 64 bytes
+RWByteAddressBuffer stats : register(u5, space1);
+
+struct Push {
+    uint radiusPolicy;   // 0 pixel footprint, 1 fixed world radius
+    float radiusScale;
+    float worldRadius;
+    uint maxDepth;
+    uint frame;
+    uint blasLo;
+    uint blasHi;
+    uint pad;
+};
+ConstantBuffer<Push> pc : register(b0, space999);
+
+void writeSphere(uint pixel, float3 centre, float radius, float3 transmittance, uint objectId, float3 normal) {
+    uint o = 48u * pixel;
+    spheres.Store4(o, uint4(asuint(centre), asuint(radius)));
+    spheres.Store4(o + 16u, uint4(asuint(transmittance), objectId));
+    spheres.Store4(o + 32u, uint4(asuint(normal), pixel));
+}
+
+// Row-major 3x4 transform (scale r, translate c), id/mask, SBT offset/flags, BLAS address.
+void writeInstance(uint pixel, float3 c, float r, uint mask) {
+    uint o = 64u * pixel;
+    instances.Store4(o, asuint(float4(r, 0.0f, 0.0f, c.x)));
+    instances.Store4(o + 16u, asuint(float4(0.0f, r, 0.0f, c.y)));
+    instances.Store4(o + 32u, asuint(float4(0.0f, 0.0f, r, c.z)));
+    instances.Store4(o + 48u, uint4((pixel & 0xFFFFFFu) | (mask << 24), 0u, pc.blasLo, pc.blasHi));
+}
+
+void writeEmpty(uint pixel) {
+    spheres.Store(48u * pixel + 12u, asuint(0.0f));   // radius 0: no sphere
+    spheres.Store(48u * pixel + 44u, pixel);
+    writeInstance(pixel, (float3)0.0f, 0.0f, 0u);     // mask 0: never hit
+}
+
+[shader("raygeneration")]
+void main() {
+    CameraConstants camera = cameraBlock.camera;
+    uint2 p = DispatchRaysIndex().xy;
+    uint pixel = p.y * camera.frame.x + p.x;
+    uint objectId = gObjectId.Load(int3(p, 0));
+    if (objectId == 0u || gOptics.Load(int3(p, 0)).w < 0.5f) { writeEmpty(pixel); return; }
+
+    Rng rng = rngCreate(pixel, 0x5eedu, 1u, pc.frame);
+    PinholeCamera cam = cameraPinhole(camera);
+    float3 origin = cam.eye;
+    float3 dir = cameraRayDirection(cam, float2(p) + 0.5f);
+    float3 throughput = (float3)1.0f;
+    float3 sigma = (float3)0.0f;
+    float pathLength = 0.0f;
+    uint events = 0u;
+    for (uint vertex = 0u; vertex <= pc.maxDepth + 1u; ++vertex) {
+        TracePayload payload;
+        payload.barycentrics = (float2)0.0f;
+        payload.instance = 0u;
+        payload.primitive = 0u;
+        payload.t = -1.0f;
+        RayDesc ray;
+        ray.Origin = origin;
+        ray.TMin = vertex == 0u ? camera.clip.x : 0.0f;
+        ray.Direction = dir;
+        ray.TMax = 1.0e30f;
+        TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 0, 0, ray, payload);
+        if (payload.t < 0.0f) break;
+        pathLength += payload.t;
+        if (any(sigma != (float3)0.0f)) throughput *= beerLambert(sigma, payload.t);
+        SurfaceHit h = sceneSurfaceHit(payload.instance, payload.primitive, payload.barycentrics);
+        float3 x = origin + payload.t * dir;
+        float3 ng = dot(h.shadingNormal, h.geometricNormal) < 0.0f ? -h.geometricNormal : h.geometricNormal;
+        if (sceneMaterialIsSpecular(h.material)) {
+            if (events >= pc.maxDepth) break;
+            SpecularEvent ev = sampleSpecularEvent(dir, h.shadingNormal, h.optics, rngNextFloat3(rng), kTransportRadiance);
+            if (ev.kind == kEventAbsorbed) break;
+            if (ev.kind != kEventDiffuse) {
+                ++events;
+                throughput *= ev.weight;
+                dir = ev.direction;
+                sigma = ev.insideMedium ? volumeSigmaA(h.material.attenuationColor, h.material.attenuationDistance)
+                                        : (float3)0.0f;
+                origin = x + (dot(dir, ng) > 0.0f ? ng : -ng) * rayEpsilon(x);
+                continue;
+            }
+        }
+        if (events == 0u) break;
+        float radius = pc.radiusPolicy == 0u ? pc.radiusScale * pathLength * sqrt(pinholePixelArea(cam)) : pc.worldRadius;
+        float3 nFacing = dot(h.shadingNormal, dir) < 0.0f ? h.shadingNormal : -h.shadingNormal;
+        writeSphere(pixel, x, radius, throughput, h.objectId, nFacing);
+        writeInstance(pixel, x, radius, 0xFFu);
+        stats.InterlockedAdd(4u * kStatSpheres, 1u);
+        return;
+    }
+    writeEmpty(pixel);
+}

@@ -1,0 +1,157 @@
+// Forward caustic trace (paper 3.2, Figure 4; mirror of shaders/vulkan/forward_trace/forward_body.glsl):
+// one launch per (map texel x sample, map row, map layer). Shared by forward.rgen.hlsl and
+// forward_fixed.rgen.hlsl.
+#include "scene/scene.hlsli"
+#include "scene/camera.hlsli"
+#include "common/emission.h"
+#include "common/rng.h"
+#include "common/volume.h"
+#include "caustic_maps/caustic_map.hlsli"
+#include "forward_trace/caustic_hit.hlsli"
+
+struct CameraBlock { CameraConstants camera; };
+ConstantBuffer<CameraBlock> cameraBlock : register(b0, space1);
+ByteAddressBuffer maps : register(t1, space1);
+Texture2DArray<uint> mapObjectIds : register(t2, space1);
+Texture2D<float4> gLinearDepth : register(t3, space1);
+Texture2D<uint> gObjectId : register(t4, space1);
+RWByteAddressBuffer hits : register(u6, space1);
+RWByteAddressBuffer stats : register(u7, space1);
+#define RADIANCE_REGISTER u5
+#define RADIANCE_SPACE space1
+#include "forward_trace/radiance_atomics.hlsli"
+
+struct Push {
+    uint mapSize;
+    uint samplesPerTexel;
+    float raysPerTexel;
+    uint maxDepth;
+    uint frame;
+    uint flags;   // bit 0: Russian roulette
+    uint maxStoredHits;
+    uint pad;
+};
+ConstantBuffer<Push> pc : register(b0, space999);
+
+void statAdd(uint slot, uint value, out uint original) { stats.InterlockedAdd(4u * slot, value, original); }
+void statAdd(uint slot, uint value) { stats.InterlockedAdd(4u * slot, value); }
+
+bool texelIsSpecular(int2 t, int layer) {
+    int n = int(pc.mapSize) - 1;
+    uint id = mapObjectIds.Load(int4(clamp(t, int2(0, 0), int2(n, n)), layer, 0));
+    if (id == 0u) return false;
+    return sceneMaterialIsSpecular(sceneMaterial(sceneInstance(id - 1u).material));
+}
+
+void splatFirstType(CameraConstants camera, float3 x, float3 nFacing, uint objectId, float3 fluxBsdf) {
+    PinholeCamera cam = cameraPinhole(camera);
+    CameraProjection pr = projectToCamera(cam, x);
+    if (!pr.valid || pr.depth < camera.clip.x) return;
+    float3 toEye = (cam.eye - x) / pr.distance;
+    float cosSurface = dot(nFacing, toEye);
+    if (cosSurface <= 0.0f) return;
+    int2 px = int2(pr.pixel);
+    if (gObjectId.Load(int3(px, 0)) != objectId) return;
+    float gDepth = gLinearDepth.Load(int3(px, 0)).r;
+    float footprint = 2.0f * cam.tanHalfFovY / cam.height;
+    float tanView = min(sqrt(max(0.0f, 1.0f - cosSurface * cosSurface)) / cosSurface, 20.0f);
+    if (abs(pr.depth - gDepth) > gDepth * (1e-3f + 1.5f * footprint * tanView)) return;
+    float factor = pinholeSplatFactor(cam, pr.cosTheta, cosSurface, pr.distance);
+    addRadiance(uint(px.y) * camera.frame.x + uint(px.x), fluxBsdf * factor);
+    statAdd(kStatSplats, 1u);
+}
+
+[shader("raygeneration")]
+void main() {
+    CameraConstants camera = cameraBlock.camera;
+    uint3 id = DispatchRaysIndex();
+    uint tx = id.x / pc.samplesPerTexel;
+    uint sampleIndex = id.x % pc.samplesPerTexel;
+    uint ty = id.y;
+    int layer = int(id.z);
+    CausticMap m = loadCausticMap(maps, uint(layer));
+    bool specular = false;
+    for (int dy = -1; dy <= 1 && !specular; ++dy)
+        for (int dx = -1; dx <= 1 && !specular; ++dx) specular = texelIsSpecular(int2(tx, ty) + int2(dx, dy), layer);
+    if (!specular) return;
+
+    Rng rng = rngCreate(ty * pc.mapSize + tx, m.light, sampleIndex, pc.frame);
+    float emitProbability = clamp(pc.raysPerTexel - float(sampleIndex), 0.0f, 1.0f);
+    if (emitProbability < 1.0f && rngNextFloat(rng) >= emitProbability) return;
+    statAdd(kStatRaysPerLight + m.light, 1u);
+
+    float2 coord = float2(tx, ty) + rngNextFloat2(rng);
+    float n = float(pc.mapSize);
+    float3 origin, dir, flux;
+    if (m.orthographic != 0u) {
+        float2 q = m.extent * (2.0f * coord / n - 1.0f);
+        origin = m.origin + q.x * m.right + q.y * m.up;
+        dir = m.forward;
+        flux = m.intensity * photonFluxOrthographic(1.0f, orthographicTexelArea(m.extent, n), pc.raysPerTexel);
+    } else {
+        float2 q = perspectiveMapPlanePoint(coord, n, m.extent);
+        origin = m.origin;
+        dir = normalize(m.forward + q.x * m.right + q.y * m.up);
+        float omega = perspectiveTexelSolidAngle(uint2(tx, ty), n, m.extent);
+        float falloff = m.cosOuter > -1.0f ? spotAttenuation(dot(dir, m.spotAxis), m.cosInner, m.cosOuter) : 1.0f;
+        flux = m.intensity * (falloff * photonFluxPerspective(1.0f, omega, pc.raysPerTexel));
+    }
+    if (max(flux.x, max(flux.y, flux.z)) <= 0.0f) return;
+
+    float3 sigma = (float3)0.0f;
+    float3 throughput = (float3)1.0f;
+    uint events = 0u;
+    for (uint vertex = 0u; vertex <= pc.maxDepth + 1u; ++vertex) {
+        TracePayload payload;
+        payload.barycentrics = (float2)0.0f;
+        payload.instance = 0u;
+        payload.primitive = 0u;
+        payload.t = -1.0f;
+        RayDesc ray;
+        ray.Origin = origin;
+        ray.TMin = 0.0f;
+        ray.Direction = dir;
+        ray.TMax = 1.0e30f;
+        TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 0, 0, ray, payload);
+        if (payload.t < 0.0f) break;
+        if (any(sigma != (float3)0.0f)) flux *= beerLambert(sigma, payload.t);
+        SurfaceHit h = sceneSurfaceHit(payload.instance, payload.primitive, payload.barycentrics);
+        float3 x = origin + payload.t * dir;
+        float3 ng = dot(h.shadingNormal, h.geometricNormal) < 0.0f ? -h.geometricNormal : h.geometricNormal;
+        float eps = rayEpsilon(x);
+        if (sceneMaterialIsSpecular(h.material)) {
+            if (events >= pc.maxDepth) break;
+            SpecularEvent ev = sampleSpecularEvent(dir, h.shadingNormal, h.optics, rngNextFloat3(rng), kTransportImportance);
+            if (ev.kind == kEventAbsorbed) break;
+            if (ev.kind != kEventDiffuse) {
+                ++events;
+                flux *= ev.weight;
+                throughput *= ev.weight;
+                dir = ev.direction;
+                sigma = ev.insideMedium ? volumeSigmaA(h.material.attenuationColor, h.material.attenuationDistance)
+                                        : (float3)0.0f;
+                origin = x + (dot(dir, ng) > 0.0f ? ng : -ng) * eps;
+                if ((pc.flags & 1u) != 0u && events >= 2u) {
+                    float survive = min(1.0f, max(throughput.x, max(throughput.y, throughput.z)));
+                    if (rngNextFloat(rng) >= survive) break;
+                    flux /= survive;
+                    throughput /= survive;
+                }
+                continue;
+            }
+        }
+        if (events == 0u) break;
+        float3 nFacing = dot(h.shadingNormal, dir) < 0.0f ? h.shadingNormal : -h.shadingNormal;
+        float3 fluxBsdf = flux * h.baseColor * kInvPi;
+        uint slot;
+        statAdd(kStatStoredHitAttempts, 1u, slot);
+        if (slot < pc.maxStoredHits) {
+            uint o = 48u * slot;
+            hits.Store4(o, uint4(asuint(x), h.objectId));
+            hits.Store4(o + 16u, uint4(asuint(nFacing), m.light));
+            hits.Store4(o + 32u, uint4(asuint(fluxBsdf), 0u));
+        }
+        splatFirstType(camera, x, nFacing, h.objectId, fluxBsdf);
+        break;
+    }
+}

@@ -1,0 +1,33 @@
+#ifndef CAUSTICS_D3D12_RADIANCE_ATOMICS_HLSLI
+#define CAUSTICS_D3D12_RADIANCE_ATOMICS_HLSLI
+// Atomic RGB radiance per pixel, 3 words per pixel (mirror of shaders/vulkan/forward_trace/
+// radiance_atomics.glsl). Define RADIANCE_REGISTER (e.g. u5) and RADIANCE_SPACE first.
+// HLSL has no float atomic add (SM 6.6 adds only 64-bit integer atomics and bitwise float
+// compare-exchange), so the float variant is a compare-exchange loop on the float's bits: the buffer
+// holds the same float bits as the Vulkan float-atomic variant. CAUSTICS_FIXED_POINT: round(v x 65536)
+// added as uint (caustics::kFixedPointScale; saturating), as on Vulkan.
+RWByteAddressBuffer radianceWords : register(RADIANCE_REGISTER, RADIANCE_SPACE);
+
+#ifdef CAUSTICS_FIXED_POINT
+void addRadiance(uint pixel, float3 value) {
+    for (uint c = 0u; c < 3u; ++c) {
+        float v = clamp(value[c] * 65536.0f + 0.5f, 0.0f, 4.0e9f);
+        if (v >= 1.0f) radianceWords.InterlockedAdd(4u * (3u * pixel + c), uint(v));
+    }
+}
+#else
+void addRadiance(uint pixel, float3 value) {
+    for (uint c = 0u; c < 3u; ++c) {
+        if (!(value[c] > 0.0f)) continue;
+        uint address = 4u * (3u * pixel + c);
+        uint expected = radianceWords.Load(address);
+        for (uint attempt = 0u; attempt < 1024u; ++attempt) {   // bounded: no infinite loop under contention
+            uint original;
+            radianceWords.InterlockedCompareExchange(address, expected, asuint(asfloat(expected) + value[c]), original);
+            if (original == expected) break;
+            expected = original;
+        }
+    }
+}
+#endif
+#endif

@@ -1,0 +1,107 @@
+// Text checks of the D3D12 HLSL (no DXC here to compile it): every GLSL entry point of
+// shaders/vulkan has an HLSL counterpart shaders/d3d12/<same path>.hlsl, embedded and self-contained,
+// declaring the `main` entry point of its stage, and every resource names its register space.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "caustics/hlsl_sources.h"
+
+namespace fs = std::filesystem;
+
+namespace caustics::hlsl {
+namespace {
+
+const fs::path kShaders = fs::path(CAUSTICS_SOURCE_DIR) / "shaders";
+
+// GLSL stage extension -> what the HLSL must declare for it.
+const std::map<std::string, std::string>& stageMarkers() {
+    static const std::map<std::string, std::string> m = {
+        {".vert", "SV_Position"},
+        {".frag", "SV_Target"},
+        {".comp", "[numthreads("},
+        {".rgen", "[shader(\"raygeneration\")]"},
+        {".rchit", "[shader(\"closesthit\")]"},
+        {".rahit", "[shader(\"anyhit\")]"},
+        {".rmiss", "[shader(\"miss\")]"},
+        {".rint", "[shader(\"intersection\")]"},
+        {".rcall", "[shader(\"callable\")]"},
+    };
+    return m;
+}
+
+std::vector<std::string> glslEntryPoints() {
+    std::vector<std::string> out;
+    for (const auto& e : fs::recursive_directory_iterator(kShaders / "vulkan"))
+        if (e.is_regular_file() && stageMarkers().count(e.path().extension().string()))
+            out.push_back(fs::relative(e.path(), kShaders / "vulkan").generic_string());
+    return out;
+}
+
+TEST(HlslSources, EveryGlslEntryPointHasAnHlslFileWithTheSameStem) {
+    const auto entries = glslEntryPoints();
+    ASSERT_FALSE(entries.empty());
+    for (const std::string& e : entries)
+        EXPECT_TRUE(fs::exists(kShaders / "d3d12" / (e + ".hlsl"))) << "missing shaders/d3d12/" << e << ".hlsl";
+}
+
+TEST(HlslSources, EveryGlslEntryPointIsEmbedded) {
+    for (const std::string& e : glslEntryPoints()) EXPECT_FALSE(source(e).empty()) << e;
+}
+
+TEST(HlslSources, EachShaderDeclaresMainForItsStage) {
+    for (const std::string& e : glslEntryPoints()) {
+        const std::string_view text = source(e);
+        const std::string& marker = stageMarkers().at(fs::path(e).extension().string());
+        EXPECT_NE(text.find(marker), std::string_view::npos) << e << " lacks " << marker;
+        EXPECT_NE(text.find(" main("), std::string_view::npos) << e << " has no main()";
+    }
+}
+
+TEST(HlslSources, EmbeddedTextHasNoQuotedIncludesLeft) {
+    for (std::string_view name : names()) {
+        const std::string_view text = source(name);
+        EXPECT_EQ(text.find("#include \""), std::string_view::npos) << name;
+        EXPECT_NE(text.find("#line 1 "), std::string_view::npos) << name;   // messages map to the files
+    }
+}
+
+TEST(HlslSources, EveryRegisterNamesItsSpace) {
+    // docs/d3d12.md: binding layout i -> space i, push constants space999, draw parameters space998.
+    for (std::string_view name : names()) {
+        const std::string_view text = source(name);
+        for (size_t at = text.find("register("); at != std::string_view::npos; at = text.find("register(", at + 1)) {
+            const size_t close = text.find(')', at);
+            const std::string_view reg = text.substr(at, close - at);
+            // SCENE_SPACE / RADIANCE_SPACE: macros that default to / are defined as spaceN.
+            const bool named = reg.find("space") != std::string_view::npos || reg.find("SPACE") != std::string_view::npos;
+            EXPECT_TRUE(named) << name << ": " << reg;
+        }
+    }
+}
+
+TEST(HlslSources, PushConstantsUseSpace999) {
+    for (std::string_view name : names()) {
+        const std::string_view text = source(name);
+        const size_t at = text.find("ConstantBuffer<Push>");
+        if (at == std::string_view::npos) continue;
+        EXPECT_NE(text.substr(at, 80).find("register(b0, space999)"), std::string_view::npos) << name;
+    }
+}
+
+TEST(HlslSources, LookupAcceptsTheSuffixAndRejectsUnknownNames) {
+    EXPECT_EQ(source("composite/composite.comp"), source("composite/composite.comp.hlsl"));
+    EXPECT_TRUE(source("composite/nothing.comp").empty());
+}
+
+TEST(HlslSources, ShaderCodeIsHlslNamedAfterTheFile) {
+    rhi::ShaderCode code = shaderCode("composite/composite.comp");
+    EXPECT_EQ(code.kind, rhi::ShaderCodeKind::HLSL);
+    EXPECT_EQ(code.debugName, "shaders/d3d12/composite/composite.comp.hlsl");
+    EXPECT_EQ(code.bytes.size(), source("composite/composite.comp").size());
+}
+
+}  // namespace
+}  // namespace caustics::hlsl
