@@ -43,9 +43,9 @@ float srgbEncode(float c) {
 }
 template <typename T>
 void append(std::vector<uint8_t>& out, T v) {
-    uint8_t bytes[sizeof(T)];
-    std::memcpy(bytes, &v, sizeof(T));
-    out.insert(out.end(), bytes, bytes + sizeof(T));
+    const size_t at = out.size();
+    out.resize(at + sizeof(T));
+    std::memcpy(out.data() + at, &v, sizeof(T));
 }
 uint32_t channelsOf(Format f) {
     switch (f) {

@@ -5,6 +5,7 @@ namespace caustics::bench {
 std::span<const BenchMode> benchModes() {
     static const BenchMode kModes[] = {
         {"rays", "primary and incoherent rays against a procedural ~1M-triangle mesh", runRaysMode},
+        {"caustics", "per-pass GPU times of the caustic passes on the built-in scenes", runCausticsMode},
     };
     return kModes;
 }

@@ -16,5 +16,6 @@ struct BenchMode {
 std::span<const BenchMode> benchModes();
 
 int runRaysMode(const BenchOptions& options);
+int runCausticsMode(const BenchOptions& options);
 
 }  // namespace caustics::bench

@@ -2,6 +2,7 @@
 // caustic_map.vert): vertex pulling, one draw per instance with firstInstance = the scene instance.
 // SV_InstanceID does not include firstInstance, so the backend's draw parameters (b0, space998) add it.
 #define SCENE_NO_TEXTURES
+#define SCENE_NO_TLAS
 #include "scene/scene.hlsli"
 #include "scene/camera.hlsli"
 #include "caustic_maps/caustic_map.hlsli"

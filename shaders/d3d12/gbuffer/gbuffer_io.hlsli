@@ -3,6 +3,7 @@
 // Mirror of shaders/vulkan/gbuffer/gbuffer_io.glsl: scene space 0, camera space 1, the instance index
 // as a push constant (b0, space999); vertex pulling, no input layout.
 #define SCENE_UNIFORM_TEXTURE_INDEX
+#define SCENE_NO_TLAS
 #include "scene/scene.hlsli"
 #include "scene/camera.hlsli"
 

@@ -7,6 +7,7 @@
 // declaration fits any buffer whatever its structStride.
 //   t0 sceneTlas, t1 positions, t2 vertices, t3 indices, t4 materials, t5 instances, t6 lights,
 //   s7 sceneSampler, t8.. sceneTextures[SCENE_MAX_TEXTURES]
+// Define SCENE_NO_TEXTURES / SCENE_UNIFORM_TEXTURE_INDEX / SCENE_NO_TLAS as for the GLSL.
 #include "common/lang.h"
 #include "common/fresnel.h"
 #include "common/specular_event.h"
@@ -58,7 +59,9 @@ struct GpuLight {   // 64 bytes
     float cosOuter; uint castsCaustics;
 };
 
+#ifndef SCENE_NO_TLAS   // raster/compute shaders (vs/ps/cs_6_0) have no DXR types; as in scene.glsl
 RaytracingAccelerationStructure sceneTlas : register(t0, SCENE_SPACE);
+#endif
 ByteAddressBuffer scenePositionBuffer : register(t1, SCENE_SPACE);
 ByteAddressBuffer sceneVertexBuffer : register(t2, SCENE_SPACE);
 ByteAddressBuffer sceneIndexBuffer : register(t3, SCENE_SPACE);

@@ -12,12 +12,13 @@ namespace caustics::test {
 namespace {
 
 class CausticFilter : public GpuTest {};
+constexpr uint32_t kFrames = 3;
 
 TEST_F(CausticFilter, FilteredRadianceKeepsTheMeanOfTheUnfilteredCaustics) {
     CausticsSettings s = smallSettings();
     s.filter = true;
     s.raysPerTexel = 4.0f;
-    auto run = runCaustics(*device, smallGlassSphereScene(), obliqueCamera(), 64, 64, s, 3);
+    auto run = runCaustics(*device, smallGlassSphereScene(), obliqueCamera(), 64, 64, s, kFrames);
     ASSERT_TRUE(run) << run.message();
     const CausticRun& r = run.value();
     double filtered = 0.0, raw = 0.0;
