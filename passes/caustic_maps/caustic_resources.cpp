@@ -20,17 +20,11 @@ Result<rhi::BindingLayoutHandle> layout(rhi::IDevice& d, std::initializer_list<s
     return d.createBindingLayout(desc);
 }
 
-Result<rhi::ShaderLibraryDesc> library(const char* path, const char* name, ShaderStage stage) {
-    rhi::ShaderLibraryDesc lib;
-    CAUSTICS_TRY(lib.code, pass_shaders::shaderCode(path));
-    lib.exports.push_back({name, "main", stage});
-    return lib;
-}
 
 Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path, const rhi::BindingLayoutHandle& l,
                                            uint32_t push) {
     rhi::ComputePipelineDesc desc;
-    CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(path));
+    CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(d.backend(), path));
     desc.shader.stage = ShaderStage::Compute;
     desc.bindings.layouts = {l};
     desc.bindings.pushConstantBytes = push;
@@ -42,9 +36,9 @@ Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path, co
 Status sceneTraceState(rhi::IDevice& d, const char* rayGen, const rhi::BindingLayoutHandle& scene,
                        const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table) {
     rhi::StateObjectDesc desc;
-    CAUSTICS_TRY(auto rg, library(rayGen, "rayGen", ShaderStage::RayGen));
-    CAUSTICS_TRY(auto miss, library("forward_trace/trace.rmiss", "miss", ShaderStage::Miss));
-    CAUSTICS_TRY(auto hit, library("forward_trace/trace.rchit", "closestHit", ShaderStage::ClosestHit));
+    CAUSTICS_TRY(auto rg, pass_shaders::shaderLibrary(d.backend(), rayGen, "rayGen", ShaderStage::RayGen));
+    CAUSTICS_TRY(auto miss, pass_shaders::shaderLibrary(d.backend(), "forward_trace/trace.rmiss", "miss", ShaderStage::Miss));
+    CAUSTICS_TRY(auto hit, pass_shaders::shaderLibrary(d.backend(), "forward_trace/trace.rchit", "closestHit", ShaderStage::ClosestHit));
     desc.libraries = {rg, miss, hit};
     desc.hitGroups.push_back({"hit", rhi::HitGroupType::Triangles, "closestHit", "", ""});
     desc.maxPayloadBytes = 20;   // TracePayload
@@ -88,10 +82,10 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d) {
 
     // Gather: sphere.rint + gather.rahit over the sphere TLAS (procedural hit group).
     rhi::StateObjectDesc g;
-    CAUSTICS_TRY(auto rgen, library("backward_trace/gather.rgen", "rayGen", ShaderStage::RayGen));
-    CAUSTICS_TRY(auto miss, library("backward_trace/gather.rmiss", "miss", ShaderStage::Miss));
-    CAUSTICS_TRY(auto isect, library("backward_trace/sphere.rint", "sphere", ShaderStage::Intersection));
-    CAUSTICS_TRY(auto ahit, library(m.floatAtomics ? "backward_trace/gather.rahit" : "backward_trace/gather_fixed.rahit",
+    CAUSTICS_TRY(auto rgen, pass_shaders::shaderLibrary(d.backend(), "backward_trace/gather.rgen", "rayGen", ShaderStage::RayGen));
+    CAUSTICS_TRY(auto miss, pass_shaders::shaderLibrary(d.backend(), "backward_trace/gather.rmiss", "miss", ShaderStage::Miss));
+    CAUSTICS_TRY(auto isect, pass_shaders::shaderLibrary(d.backend(), "backward_trace/sphere.rint", "sphere", ShaderStage::Intersection));
+    CAUSTICS_TRY(auto ahit, pass_shaders::shaderLibrary(d.backend(), m.floatAtomics ? "backward_trace/gather.rahit" : "backward_trace/gather_fixed.rahit",
                                     "gather", ShaderStage::AnyHit));
     g.libraries = {rgen, miss, isect, ahit};
     g.hitGroups.push_back({"spheres", rhi::HitGroupType::Procedural, "", "gather", "sphere"});
@@ -127,9 +121,9 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     if (sceneLayoutSeen == sceneLayout.get() && mapPipeline) return okStatus();
     rhi::IDevice& d = *device;
     rhi::GraphicsPipelineDesc gp;
-    CAUSTICS_TRY(gp.vertexShader.code, pass_shaders::shaderCode("caustic_maps/caustic_map.vert"));
+    CAUSTICS_TRY(gp.vertexShader.code, pass_shaders::shaderCode(d.backend(), "caustic_maps/caustic_map.vert"));
     gp.vertexShader.stage = ShaderStage::Vertex;
-    CAUSTICS_TRY(gp.fragmentShader.code, pass_shaders::shaderCode("caustic_maps/caustic_map.frag"));
+    CAUSTICS_TRY(gp.fragmentShader.code, pass_shaders::shaderCode(d.backend(), "caustic_maps/caustic_map.frag"));
     gp.fragmentShader.stage = ShaderStage::Fragment;
     gp.bindings.layouts = {sceneLayout, mapLayout};
     gp.bindings.pushConstantBytes = 4;

@@ -24,7 +24,7 @@ Result<CompositePass> CompositePass::create(rhi::IDevice& device) {
     ld.add(5, rhi::BindingType::StorageTexture).add(6, rhi::BindingType::StorageTexture);
     CAUSTICS_TRY(pass.layout_, device.createBindingLayout(ld));
     rhi::ComputePipelineDesc desc;
-    CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode("composite/composite.comp"));
+    CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(device.backend(), "composite/composite.comp"));
     desc.shader.stage = rhi::ShaderStage::Compute;
     desc.bindings.layouts = {pass.layout_};
     desc.bindings.pushConstantBytes = sizeof(PushConstants);

@@ -16,11 +16,8 @@ Result<DirectLightingPass> DirectLightingPass::create(rhi::IDevice& device, cons
         .add(4, rhi::BindingType::StorageTexture);   // radiance out
     CAUSTICS_TRY(pass.layout_, device.createBindingLayout(layoutDesc));
 
-    auto library = [](const char* file, const char* name, rhi::ShaderStage stage) -> Result<rhi::ShaderLibraryDesc> {
-        rhi::ShaderLibraryDesc lib;
-        CAUSTICS_TRY(lib.code, pass_shaders::shaderCode(file));
-        lib.exports.push_back({name, "main", stage});
-        return lib;
+    auto library = [&](const char* file, const char* name, rhi::ShaderStage stage) {
+        return pass_shaders::shaderLibrary(device.backend(), file, name, stage);
     };
     rhi::StateObjectDesc desc;
     CAUSTICS_TRY(auto rgen, library("direct_lighting/direct.rgen", "directRayGen", rhi::ShaderStage::RayGen));

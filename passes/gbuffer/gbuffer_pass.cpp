@@ -9,9 +9,9 @@ namespace caustics {
 Result<GBufferPass> GBufferPass::create(rhi::IDevice& device, const rhi::BindingLayoutHandle& sceneLayout,
                                         const rhi::BindingLayoutHandle& cameraLayout) {
     rhi::GraphicsPipelineDesc desc;
-    CAUSTICS_TRY(desc.vertexShader.code, pass_shaders::shaderCode("gbuffer/gbuffer.vert"));
+    CAUSTICS_TRY(desc.vertexShader.code, pass_shaders::shaderCode(device.backend(), "gbuffer/gbuffer.vert"));
     desc.vertexShader.stage = rhi::ShaderStage::Vertex;
-    CAUSTICS_TRY(desc.fragmentShader.code, pass_shaders::shaderCode("gbuffer/gbuffer.frag"));
+    CAUSTICS_TRY(desc.fragmentShader.code, pass_shaders::shaderCode(device.backend(), "gbuffer/gbuffer.frag"));
     desc.fragmentShader.stage = rhi::ShaderStage::Fragment;
     desc.bindings.layouts = {sceneLayout, cameraLayout};
     desc.bindings.pushConstantBytes = 16;

@@ -1,19 +1,28 @@
 #pragma once
-// SPIR-V of every shader under shaders/vulkan/, embedded into caustics_passes at build time
-// (passes/CMakeLists.txt). Look up by the path relative to shaders/vulkan/, e.g. "gbuffer/gbuffer.vert".
+// Shader code of every pass for the device's backend, embedded into caustics_passes at build time:
+// SPIR-V compiled from shaders/vulkan/ (passes/CMakeLists.txt) and HLSL text from shaders/d3d12/
+// (compiled at run time by the D3D12 backend). Looked up by the GLSL file's path relative to
+// shaders/vulkan/, e.g. "gbuffer/gbuffer.vert"; the HLSL file of the same name mirrors it.
 #include <cstdint>
 #include <span>
 #include <string_view>
 
 #include "rhi/result.h"
+#include "rhi/device.h"
 #include "rhi/shader.h"
+#include "rhi/state_object.h"
 
 namespace caustics::pass_shaders {
 
 // Empty span when no embedded shader has that name.
 std::span<const uint32_t> spirv(std::string_view name);
 
-// The embedded SPIR-V as rhi::ShaderCode; an error naming the shader when it is missing.
-Result<rhi::ShaderCode> shaderCode(std::string_view name);
+// The embedded code for `backend` (SPIR-V for Vulkan, HLSL for D3D12); an error naming the shader
+// when it is missing.
+Result<rhi::ShaderCode> shaderCode(rhi::Backend backend, std::string_view name);
+
+// A ray-tracing library of one file whose entry point `main` is exported as `exportName`.
+Result<rhi::ShaderLibraryDesc> shaderLibrary(rhi::Backend backend, std::string_view name, std::string exportName,
+                                             rhi::ShaderStage stage);
 
 }  // namespace caustics::pass_shaders
