@@ -6,6 +6,7 @@ std::span<const BenchMode> benchModes() {
     static const BenchMode kModes[] = {
         {"rays", "primary and incoherent rays against a procedural ~1M-triangle mesh", runRaysMode},
         {"caustics", "per-pass GPU times of the caustic passes on the built-in scenes", runCausticsMode},
+        {"frame", "per-pass GPU times of the whole CausticsModule frame on the built-in scenes", runFrameMode},
     };
     return kModes;
 }

@@ -17,5 +17,6 @@ std::span<const BenchMode> benchModes();
 
 int runRaysMode(const BenchOptions& options);
 int runCausticsMode(const BenchOptions& options);
+int runFrameMode(const BenchOptions& options);
 
 }  // namespace caustics::bench

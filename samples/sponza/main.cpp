@@ -2,6 +2,7 @@
 // in a window (--window). Prints the scene name (stand-ins labelled as such) and per-pass GPU times.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -135,6 +136,9 @@ int run(const sample::CliOptions& o) {
         std::printf("wrote %s\n", o.graphDotPath.c_str());
     }
     if (!o.outPath.empty()) {
+        std::error_code ec;
+        if (auto parent = std::filesystem::path(o.outPath).parent_path(); !parent.empty())
+            std::filesystem::create_directories(parent, ec);
         const sample::FrameImages& img = (*renderer)->images();
         Status st = okStatus();
         if (o.outPath.size() > 4 && o.outPath.substr(o.outPath.size() - 4) == ".exr") {
