@@ -45,12 +45,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
                 .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.stats)));
             rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.backwardLayout, d);
             if (!set) return;
-            rhi::ICommandList& cmd = ctx.cmd();
-            cmd.setRayTracingState(r.backwardState, r.backwardTable);
-            cmd.setBindingSet(0, sceneSet);
-            cmd.setBindingSet(1, set);
-            cmd.setPushConstants(&push, sizeof(push));
-            cmd.dispatchRays(h.width, h.height, 1);
+            recordSceneTrace(ctx.cmd(), r.backwardState, r.backwardTable, sceneSet, set, push, h.width, h.height, 1);
         };
     });
 

@@ -54,4 +54,17 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f);
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
 void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out);
 
+// Records one scene trace: the scene set (0), the pass's own set (1), push constants, the grid.
+// The forward and backward passes differ only in these arguments.
+template <typename PushConstants>
+void recordSceneTrace(rhi::ICommandList& cmd, const rhi::StateObjectHandle& state, const rhi::ShaderTableHandle& table,
+                      const rhi::BindingSetHandle& sceneSet, const rhi::BindingSetHandle& passSet,
+                      const PushConstants& push, uint32_t width, uint32_t height, uint32_t depth) {
+    cmd.setRayTracingState(state, table);
+    cmd.setBindingSet(0, sceneSet);
+    cmd.setBindingSet(1, passSet);
+    cmd.setPushConstants(&push, sizeof(push));
+    cmd.dispatchRays(width, height, depth);
+}
+
 }  // namespace caustics

@@ -45,12 +45,8 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
                 .add(rhi::BindingSetItem::storageBuffer(7, ctx.buffer(h.stats)));
             rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.forwardLayout, d);
             if (!set) return;
-            rhi::ICommandList& cmd = ctx.cmd();
-            cmd.setRayTracingState(r.forwardState, r.forwardTable);
-            cmd.setBindingSet(0, sceneSet);
-            cmd.setBindingSet(1, set);
-            cmd.setPushConstants(&push, sizeof(push));
-            cmd.dispatchRays(push.mapSize * push.samplesPerTexel, push.mapSize, layers);
+            recordSceneTrace(ctx.cmd(), r.forwardState, r.forwardTable, sceneSet, set, push,
+                             push.mapSize * push.samplesPerTexel, push.mapSize, layers);
         };
     });
 }
