@@ -67,6 +67,12 @@ public:
                   std::span<const AccelStructBarrier> accelStructs) override {
         std::vector<D3D12_RESOURCE_BARRIER> out;
         auto emit = [&](ID3D12Resource* r, const BarrierPlan& p, D3D12_RESOURCE_STATES& tracked) {
+            if (p.aliasing) {
+                D3D12_RESOURCE_BARRIER b{};
+                b.Type = D3D12_RESOURCE_BARRIER_TYPE_ALIASING;
+                b.Aliasing = {nullptr, r};   // null "before": any resource placed over the same memory
+                out.push_back(b);
+            }
             if (p.transition) {
                 D3D12_RESOURCE_BARRIER b{};
                 b.Type = D3D12_RESOURCE_BARRIER_TYPE_TRANSITION;
@@ -83,7 +89,7 @@ public:
         };
         for (const TextureBarrier& t : textures) {
             auto* tex = static_cast<Texture*>(t.texture.get());
-            emit(tex->resource.get(), planBarrier(t.before, t.after, tex->state), tex->state);
+            emit(tex->resource.get(), planBarrier(t.before, t.after, tex->state, t.aliasing), tex->state);
         }
         for (const BufferBarrier& bb : buffers) {
             auto* buf = static_cast<Buffer*>(bb.buffer.get());
@@ -93,7 +99,7 @@ public:
                 emit(buf->resource.get(), planAccelStructBarrier(bb.before, bb.after), fixed);
                 continue;
             }
-            emit(buf->resource.get(), planBarrier(bb.before, bb.after, buf->state), buf->state);
+            emit(buf->resource.get(), planBarrier(bb.before, bb.after, buf->state, bb.aliasing), buf->state);
         }
         for (const AccelStructBarrier& a : accelStructs) {
             auto* as = static_cast<AccelStruct*>(a.accelStruct.get());

@@ -34,8 +34,10 @@ D3D12_RESOURCE_STATES toD3D12States(ResourceState state) {
     return D3D12_RESOURCE_STATES(out);
 }
 
-BarrierPlan planBarrier(ResourceState before, ResourceState after, D3D12_RESOURCE_STATES current) {
+BarrierPlan planBarrier(ResourceState before, ResourceState after, D3D12_RESOURCE_STATES current,
+                        bool aliasing) {
     BarrierPlan plan;
+    plan.aliasing = aliasing;
     plan.before = before == ResourceState::Undefined ? current : toD3D12States(before);
     plan.after = toD3D12States(after);
     plan.transition = plan.before != plan.after;

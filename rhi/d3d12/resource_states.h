@@ -17,11 +17,15 @@ struct BarrierPlan {
     D3D12_RESOURCE_STATES before = D3D12_RESOURCE_STATE_COMMON;
     D3D12_RESOURCE_STATES after = D3D12_RESOURCE_STATE_COMMON;
     bool uav = false;                    // emit D3D12_RESOURCE_BARRIER_TYPE_UAV
+    // Emit D3D12_RESOURCE_BARRIER_TYPE_ALIASING (before = any placed resource) ahead of the
+    // transition: the resource takes over heap memory another one used (render-graph aliasing).
+    bool aliasing = false;
 };
 
 // `current` is the state the backend last put the resource in; it stands in for `before` when the
 // caller says Undefined (contents may be discarded, but D3D12 still needs the real state).
-BarrierPlan planBarrier(ResourceState before, ResourceState after, D3D12_RESOURCE_STATES current);
+BarrierPlan planBarrier(ResourceState before, ResourceState after, D3D12_RESOURCE_STATES current,
+                        bool aliasing = false);
 
 // Acceleration-structure barriers: always a UAV barrier when a build/update/copy wrote it.
 BarrierPlan planAccelStructBarrier(ResourceState before, ResourceState after);

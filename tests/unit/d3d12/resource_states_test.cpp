@@ -10,6 +10,18 @@ TEST(D3D12Barriers, ShaderResourceIsReadableByPixelAndNonPixelStages) {
               D3D12_RESOURCE_STATE_PIXEL_SHADER_RESOURCE | D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE);
 }
 
+// The render graph flags the first barrier of a transient placed over memory another transient used;
+// D3D12 needs an aliasing barrier then, besides the transition (D3D12 "Using resource barriers").
+TEST(D3D12Barriers, AliasingFlagAsksForAnAliasingBarrierBeforeTheTransition) {
+    BarrierPlan plan = planBarrier(ResourceState::Undefined, ResourceState::UnorderedAccess,
+                                   D3D12_RESOURCE_STATE_COMMON, /*aliasing=*/true);
+    EXPECT_TRUE(plan.aliasing);
+    EXPECT_TRUE(plan.transition);
+    EXPECT_EQ(plan.after, D3D12_RESOURCE_STATE_UNORDERED_ACCESS);
+    EXPECT_FALSE(planBarrier(ResourceState::Undefined, ResourceState::UnorderedAccess, D3D12_RESOURCE_STATE_COMMON)
+                     .aliasing);
+}
+
 TEST(D3D12Barriers, SingleStatesMapOneToOne) {
     EXPECT_EQ(toD3D12States(ResourceState::UnorderedAccess), D3D12_RESOURCE_STATE_UNORDERED_ACCESS);
     EXPECT_EQ(toD3D12States(ResourceState::RenderTarget), D3D12_RESOURCE_STATE_RENDER_TARGET);
