@@ -88,7 +88,7 @@ const char* cliUsage() {
            "  --camera ex,ey,ez,tx,ty,tz,fov   eye, target and vertical field of view in degrees\n"
            "  --out FILE.png|FILE.exr output image (EXR keeps linear radiance)\n"
            "  --aov final|albedo|normal|depth|direct|caustics\n"
-           "  --frames N              frames to render (temporal filter accumulates)\n"
+           "  --frames N              frames to render (temporal filter accumulates); with --window, close after N\n"
            "  --graph-dot FILE        write the render graph as Graphviz dot\n"
            "  --map-resolution N      caustic visibility map size (default 512)\n"
            "  --rays-per-texel X      rays per map texel, fractional allowed (default 1)\n"
@@ -132,7 +132,10 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
         else if (a == "--camera") { CAUSTICS_TRY(o.camera, parseCamera(value)); }
         else if (a == "--width") { CAUSTICS_TRY(o.width, parseUint(a, value, 1, kMaxImageSide)); }
         else if (a == "--height") { CAUSTICS_TRY(o.height, parseUint(a, value, 1, kMaxImageSide)); }
-        else if (a == "--frames") { CAUSTICS_TRY(o.frames, parseUint(a, value, 1, kMaxFrames)); }
+        else if (a == "--frames") {
+            CAUSTICS_TRY(o.frames, parseUint(a, value, 1, kMaxFrames));
+            o.framesGiven = true;
+        }
         else if (a == "--map-resolution") { CAUSTICS_TRY(o.mapResolution, parseUint(a, value, 1, kMaxMapResolution)); }
         else if (a == "--max-depth") { CAUSTICS_TRY(o.maxDepth, parseUint(a, value, 1, kMaxSpecularDepth)); }
         else if (a == "--rays-per-texel") {

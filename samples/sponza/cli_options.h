@@ -29,6 +29,7 @@ struct CliOptions {
     std::string outPath;                  // .png or .exr; empty in windowed mode = none
     Aov aov = Aov::Final;
     uint32_t frames = 1;
+    bool framesGiven = false;             // --window: close after --frames frames (scripted runs)
     std::string graphDotPath;
     bool window = false;
     bool reference = false;               // also render the CPU reference light tracer

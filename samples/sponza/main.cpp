@@ -1,6 +1,7 @@
 // caustics-sponza: renders a scene with the caustics module, headless by default (writes --out), or
 // in a window (--window). Prints the scene name (stand-ins labelled as such) and per-pass GPU times.
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +21,8 @@
 using namespace caustics;
 
 namespace {
+
+std::atomic<uint32_t> gValidationProblems{0};
 
 CausticsAov toCausticsAov(sample::Aov aov) {
     switch (aov) {
@@ -96,6 +99,12 @@ int run(const sample::CliOptions& o) {
     rhi::DeviceDesc dd;
     dd.backend = *rhi::parseBackend(o.backend);
     dd.enableValidation = o.validation;
+    // With --validation every warning or error the layers report makes the run fail (exit 3), so
+    // scripted runs and tests can rely on the exit code.
+    dd.validationCallback = [](LogLevel level, std::string_view message) {
+        if (level == LogLevel::Warning || level == LogLevel::Error) ++gValidationProblems;
+        caustics::log(level, message);
+    };
     auto device = rhi::createDevice(dd);
     if (!device) {
         std::fprintf(stderr, "caustics-sponza: %s\n", device.message().c_str());
@@ -170,5 +179,10 @@ int main(int argc, char** argv) {
         std::printf("%s", sample::cliUsage());
         return 0;
     }
-    return run(*options);
+    int code = run(*options);
+    if (code == 0 && gValidationProblems > 0) {
+        std::fprintf(stderr, "caustics-sponza: %u validation warnings/errors (see above)\n", gValidationProblems.load());
+        return 3;
+    }
+    return code;
 }

@@ -70,7 +70,7 @@ int runWindow(rhi::DeviceHandle device, CausticsModule& module, const scene::Sce
     });
 
     uint32_t frame = 0;
-    while (!glfwWindowShouldClose(window)) {
+    while (!glfwWindowShouldClose(window) && !(o.framesGiven && frame >= o.frames)) {
         glfwPollEvents();
         if (glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
         if (glfwGetKey(window, GLFW_KEY_W) == GLFW_PRESS) input.orbit.distance *= 0.97f;

@@ -2,7 +2,10 @@
 // estimator and emission maps), and the map planner's light skipping (paper 3.2, Figure 3).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "caustic_harness.h"
 #include "gpu_test.h"
@@ -80,6 +83,83 @@ TEST_F(CausticReference, FirstTypeMatchesTheCpuReferenceAndConvergesWithRaysPerT
     EXPECT_LT(errors[1], errors[0]);
     EXPECT_LT(errors[2], errors[1]);
     EXPECT_LT(errors[2], kBoundAt16);
+}
+
+// Relative L1 error sum|gpu - ref| / sum(ref) of luminance over the pixels where the reference is
+// above `threshold` (cd/m^2).
+double relativeL1Above(const std::vector<glm::vec3>& gpu, const std::vector<glm::vec3>& ref, float threshold,
+                       uint32_t* count = nullptr) {
+    double err = 0.0, sum = 0.0;
+    uint32_t n = 0;
+    for (size_t i = 0; i < ref.size(); ++i) {
+        if (luminance(ref[i]) < threshold) continue;
+        err += std::abs(double(luminance(gpu[i])) - luminance(ref[i]));
+        sum += luminance(ref[i]);
+        ++n;
+    }
+    if (count) *count = n;
+    return sum > 0.0 ? err / sum : 1e9;
+}
+
+constexpr uint32_t kTableWidth = 128, kTableHeight = 96;
+
+CausticsSettings tableSettings(float rays, uint32_t seed) {
+    CausticsSettings s;
+    s.mapResolution = 128;
+    s.raysPerTexel = rays;
+    s.maxSpecularDepth = 4;
+    s.filter = false;
+    s.secondType = false;   // the reference renders the first type only
+    s.russianRoulette = false;
+    s.maxStoredHits = 1u << 16;
+    s.seed = seed;
+    return s;
+}
+
+TEST_F(CausticReference, MeasureBuiltinNoise) {
+    auto scene = scene::makeBuiltin("builtin");
+    ASSERT_TRUE(scene) << scene.message();
+    const scene::Camera cam = scene.value().cameras.at(0);
+    std::vector<std::vector<glm::vec3>> refs;
+    for (uint32_t seed : {0u, 1u}) {
+        reference::ReferenceOptions o;
+        o.width = kTableWidth;
+        o.height = kTableHeight;
+        o.photonsPerLight = 2'000'000;
+        o.maxDepth = 4;
+        o.seed = seed;
+        auto t0 = std::chrono::steady_clock::now();
+        auto ref = reference::renderCausticsReference(scene.value(), cam, o);
+        ASSERT_TRUE(ref) << ref.message();
+        std::printf("ref seed %u: %.1f s emitted %llu splatted %llu\n", seed,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+                    (unsigned long long)ref.value().photonsEmitted, (unsigned long long)ref.value().photonsSplatted);
+        refs.push_back(ref.value().pixels);
+    }
+    std::vector<float> lum;
+    for (auto& v : refs[0]) if (luminance(v) > 0) lum.push_back(luminance(v));
+    std::sort(lum.begin(), lum.end());
+    std::printf("nonzero %zu of %u; p50 %.4f p90 %.4f p99 %.4f max %.4f\n", lum.size(), kTableWidth * kTableHeight,
+                lum[lum.size() / 2], lum[lum.size() * 9 / 10], lum[lum.size() * 99 / 100], lum.back());
+    std::vector<std::vector<glm::vec3>> gpus;
+    for (float rays : {1.0f, 4.0f, 16.0f})
+        for (uint32_t seed : {1u, 2u}) {
+            auto t0 = std::chrono::steady_clock::now();
+            auto run = runCaustics(*device, scene.value(), cam, kTableWidth, kTableHeight, tableSettings(rays, seed));
+            ASSERT_TRUE(run) << run.message();
+            std::printf("gpu rays %.0f seed %u: %.1f s, rays %u+%u\n", rays, seed,
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), run.value().raysOfLight(0), run.value().raysOfLight(1));
+            gpus.push_back(run.value().firstType);
+        }
+    for (float thr : {0.01f, 0.03f, 0.1f, 0.3f}) {
+        uint32_t n = 0;
+        double rr = relativeL1Above(refs[1], refs[0], thr, &n);
+        std::printf("thr %.2f (%u px): ref-ref %.4f", thr, n, rr);
+        for (int k = 0; k < 3; ++k)
+            std::printf(" | gpu%d-gpu %.4f gpu-ref %.4f %.4f", 1 << (2 * k), relativeL1Above(gpus[2 * k + 1], gpus[2 * k], thr),
+                        relativeL1Above(gpus[2 * k], refs[0], thr), relativeL1Above(gpus[2 * k + 1], refs[0], thr));
+        std::printf("\n");
+    }
 }
 
 // The built-in table scene's third light aims away from every specular object: it gets no map and
