@@ -6,5 +6,5 @@ set -euo pipefail
 cd "$(dirname "$0")"
 bash scripts/build.sh
 mkdir -p out
-./build/bin/caustics-sponza --scene builtin --width 512 --height 384 --out out/caustics.png "$@"
+./build/bin/caustics-sponza --scene builtin --width 512 --height 384 --frames 4 --out out/caustics.png "$@"
 echo "run.sh: wrote $(pwd)/out/caustics.png"
