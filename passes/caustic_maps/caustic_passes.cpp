@@ -1,5 +1,7 @@
 // addCausticPasses: plans the maps on the CPU, then adds the passes of caustic_passes.h in order.
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <cstring>
 
 #include "caustic_maps/caustic_internal.h"
@@ -34,6 +36,29 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
     });
 }
 
+// Refuses settings the device cannot run, naming the setting, before anything is allocated.
+// 2^30 is the smallest maxRayDispatchInvocationCount Vulkan allows and D3D12's DispatchRays limit;
+// every sphere of the second type is one TLAS instance, so W x H must fit maxInstanceCount.
+Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan) {
+    constexpr uint64_t kMaxRayLaunches = 1ull << 30;
+    const uint64_t samplesPerTexel = uint64_t(std::ceil(in.settings.raysPerTexel));
+    const uint64_t launches = uint64_t(in.settings.mapResolution) * in.settings.mapResolution * samplesPerTexel *
+                              std::max<uint64_t>(plan.maps.size(), 1);
+    if (launches > kMaxRayLaunches)
+        return makeError("addCausticPasses: mapResolution " + std::to_string(in.settings.mapResolution) +
+                         " x raysPerTexel " + std::to_string(in.settings.raysPerTexel) + " x " +
+                         std::to_string(plan.maps.size()) + " light maps = " + std::to_string(launches) +
+                         " ray launches, over the 2^30 a dispatch may have; lower mapResolution or raysPerTexel");
+    const uint64_t pixels = uint64_t(in.gbuffer.width) * in.gbuffer.height;
+    const uint64_t maxInstances = in.device ? in.device->capabilities().maxInstanceCount : 0;
+    if (in.settings.secondType && maxInstances != 0 && pixels > maxInstances)
+        return makeError("addCausticPasses: secondType needs one sphere instance per pixel, " +
+                         std::to_string(in.gbuffer.width) + "x" + std::to_string(in.gbuffer.height) + " = " +
+                         std::to_string(pixels) + " is over the device's maxInstanceCount " +
+                         std::to_string(maxInstances) + "; lower the resolution or turn secondType off");
+    return okStatus();
+}
+
 Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources& persistent,
                                         const CausticFrameInputs& in) {
     CausticResources::Impl* res = persistent.impl();
@@ -41,6 +66,8 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     if (!in.scene || !in.gpuScene || !in.sceneBindings) return makeError("addCausticPasses: scene inputs missing");
     if (!in.gbuffer.valid()) return makeError("addCausticPasses: G-buffer handles are invalid");
     CAUSTICS_CHECK(in.settings.validate());
+    CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene));
+    CAUSTICS_CHECK(checkDeviceLimits(in, plan));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
     CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height));
     res->frameSlot = in.frameIndex % uint32_t(res->frameSets.size());
@@ -51,7 +78,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     f.res = res;
     f.width = in.gbuffer.width;
     f.height = in.gbuffer.height;
-    f.plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene));
+    f.plan = std::move(plan);
 
     CausticOutputs out;
     out.floatAtomics = res->floatAtomics;

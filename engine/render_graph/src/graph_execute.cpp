@@ -101,11 +101,17 @@ void recordBarriers(rhi::ICommandList& cmd, const std::vector<PlannedBarrier>& p
     std::vector<rhi::BufferBarrier> buffers;
     std::vector<rhi::AccelStructBarrier> accels;
     for (const PlannedBarrier& b : planned) {
+        // A transient's first use in a frame waits for all earlier work on its memory, not only for
+        // aliases inside this frame: transients and the heap are reused across frames, and an earlier
+        // frame still in flight may be reading the same memory (write-after-read across frames).
+        const bool waitForEarlierUse = b.aliasing || b.activation;
         switch (b.kind) {
             case ResourceKind::Texture:
-                textures.push_back({phys.textures[b.resource], b.before, b.after, {}, b.aliasing});
+                textures.push_back({phys.textures[b.resource], b.before, b.after, {}, waitForEarlierUse});
                 break;
-            case ResourceKind::Buffer: buffers.push_back({phys.buffers[b.resource], b.before, b.after, b.aliasing}); break;
+            case ResourceKind::Buffer:
+                buffers.push_back({phys.buffers[b.resource], b.before, b.after, waitForEarlierUse});
+                break;
             case ResourceKind::AccelStruct: accels.push_back({phys.accelStructs[b.resource], b.before, b.after}); break;
         }
     }

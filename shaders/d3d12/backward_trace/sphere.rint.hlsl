@@ -6,7 +6,7 @@ ByteAddressBuffer spheres : register(t1, space0);
 
 [shader("intersection")]
 void main() {
-    CausticSphere s = loadCausticSphere(spheres, InstanceID());
+    CausticSphere s = loadCausticSphere(spheres, InstanceIndex());
     float3 d = WorldRayOrigin() - s.centre;
     if (dot(d, d) < s.radius * s.radius) {
         SphereAttributes attribs;
