@@ -99,4 +99,15 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     return out;
 }
 
+std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, const CausticsSettings& settings) {
+    std::vector<std::string> warnings;
+    if (stats.size() <= kStatStoredHitAttempts) return warnings;
+    const uint32_t offered = stats[kStatStoredHitAttempts];
+    if (offered > settings.maxStoredHits)
+        warnings.push_back("caustic hit buffer overflowed: " + std::to_string(offered) + " diffuse hits offered, " +
+                           std::to_string(settings.maxStoredHits) + " kept (CausticsSettings::maxStoredHits); " +
+                           "second-type caustics miss the rest");
+    return warnings;
+}
+
 }  // namespace caustics

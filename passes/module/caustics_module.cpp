@@ -168,6 +168,7 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         out.caustics = co.radiance;
         out.firstType = co.firstType;
         out.secondType = co.secondType;
+        out.causticStats = co.stats;
     }
 
     CompositeParams params;

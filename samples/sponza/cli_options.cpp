@@ -93,6 +93,7 @@ const char* cliUsage() {
            "  --map-resolution N      caustic visibility map size (default 512)\n"
            "  --rays-per-texel X      rays per map texel, fractional allowed (default 1)\n"
            "  --max-depth N           max specular events per caustic path (default 4)\n"
+           "  --max-stored-hits N     forward hits kept for the second type (default 1048576)\n"
            "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
            "  --no-second-type        skip caustics seen through glass (the backward sphere pass)\n"
            "  --exposure X            linear exposure before tone mapping (default 1)\n"
@@ -137,6 +138,7 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
             o.framesGiven = true;
         }
         else if (a == "--map-resolution") { CAUSTICS_TRY(o.mapResolution, parseUint(a, value, 1, kMaxMapResolution)); }
+        else if (a == "--max-stored-hits") { CAUSTICS_TRY(o.maxStoredHits, parseUint(a, value, 1, 1u << 26)); }
         else if (a == "--max-depth") { CAUSTICS_TRY(o.maxDepth, parseUint(a, value, 1, kMaxSpecularDepth)); }
         else if (a == "--rays-per-texel") {
             CAUSTICS_TRY(o.raysPerTexel, parseFloat(a, value, 0.0f, kMaxRaysPerTexel));

@@ -38,6 +38,7 @@ struct CliOptions {
     uint32_t mapResolution = 512;
     float raysPerTexel = 1.0f;
     uint32_t maxDepth = 4;
+    uint32_t maxStoredHits = 1u << 20;
     bool filter = true;
     bool secondType = true;
     float exposure = 1.0f;

@@ -1,5 +1,7 @@
 #include "frame_renderer.h"
 
+#include "caustics/caustic_passes.h"
+
 #include <cstring>
 
 namespace caustics::sample {
@@ -22,6 +24,7 @@ Result<std::unique_ptr<FrameRenderer>> FrameRenderer::create(rhi::DeviceHandle d
     };
     CAUSTICS_TRY(r->displayReadback_, readback(pixels * 4, "display readback"));
     CAUSTICS_TRY(r->hdrReadback_, readback(pixels * 16, "hdr readback"));
+    CAUSTICS_TRY(r->statsReadback_, readback(kStatCount * 4, "caustic stats readback"));
     return r;
 }
 
@@ -35,6 +38,7 @@ Status FrameRenderer::render(const scene::Camera& camera, uint32_t frameIndex, b
     CAUSTICS_TRY(FrameOutputs out, module_->addPasses(graph_, in));
     graph_.markOutput(out.display, rhi::ResourceState::CopySource);
     graph_.markOutput(out.hdr, rhi::ResourceState::CopySource);
+    if (out.causticStats.valid()) graph_.markOutput(out.causticStats, rhi::ResourceState::CopySource);
 
     cmd_->begin();
     CAUSTICS_CHECK(graph_.execute(*device_, *cmd_));
@@ -42,10 +46,19 @@ Status FrameRenderer::render(const scene::Camera& camera, uint32_t frameIndex, b
         cmd_->copyTextureToBuffer(displayReadback_, 0, graph_.texture(out.display));
         cmd_->copyTextureToBuffer(hdrReadback_, 0, graph_.texture(out.hdr));
     }
+    if (out.causticStats.valid()) cmd_->copyBuffer(statsReadback_, 0, graph_.buffer(out.causticStats), 0, kStatCount * 4);
     cmd_->end();
     CAUSTICS_TRY(uint64_t fence, device_->submit(cmd_));
     CAUSTICS_CHECK(device_->waitForFence(fence));
     graph_.collectTimings(*device_);
+    if (out.causticStats.valid() && !warnedAboutStats_) {
+        std::vector<uint32_t> stats(kStatCount);
+        CAUSTICS_CHECK(device_->readBuffer(statsReadback_, stats.data(), kStatCount * 4));
+        for (const std::string& w : causticStatsWarnings(stats, module_->settings())) {
+            caustics::log(LogLevel::Warning, w);
+            warnedAboutStats_ = true;   // once per run, not every frame
+        }
+    }
     if (readBack) {
         uint64_t pixels = uint64_t(images_.width) * images_.height;
         images_.display.resize(pixels * 4);

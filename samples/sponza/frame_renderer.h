@@ -33,7 +33,8 @@ private:
     CausticsModule* module_ = nullptr;
     rg::RenderGraph graph_;
     rhi::CommandListHandle cmd_;
-    rhi::BufferHandle displayReadback_, hdrReadback_;
+    rhi::BufferHandle displayReadback_, hdrReadback_, statsReadback_;
+    bool warnedAboutStats_ = false;
     FrameImages images_;
 };
 

@@ -41,6 +41,7 @@ CausticsSettings settingsFromOptions(const sample::CliOptions& o) {
     s.mapResolution = o.mapResolution;
     s.raysPerTexel = o.raysPerTexel;
     s.maxSpecularDepth = o.maxDepth;
+    s.maxStoredHits = o.maxStoredHits;
     s.filter = o.filter;
     s.secondType = o.secondType;
     s.exposure = o.exposure;

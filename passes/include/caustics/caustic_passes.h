@@ -10,6 +10,8 @@
 // docs/caustics.md explains every choice the paper leaves open.
 #include <cstdint>
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -107,5 +109,9 @@ inline constexpr float kFixedPointScale = 65536.0f;
 
 Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources& persistent,
                                         const CausticFrameInputs& inputs);
+
+// What a host should hear about a finished frame, from its read-back stats buffer (uint32[kStatCount]):
+// today, hit-buffer overflow (the second type then misses the dropped hits), naming the setting.
+std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, const CausticsSettings& settings);
 
 }  // namespace caustics

@@ -43,6 +43,7 @@ struct FrameOutputs {
     rg::RgTexture caustics;    // RGBA32_FLOAT caustic radiance; invalid when caustics are off
     rg::RgTexture firstType, secondType;   // unfiltered caustic components; invalid when off
     GBuffer gbuffer;
+    rg::RgBuffer causticStats; // uint32[kStatCount] (caustic_passes.h); causticStatsWarnings() reads it
 };
 
 class CausticsModule {

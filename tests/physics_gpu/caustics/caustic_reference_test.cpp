@@ -116,43 +116,46 @@ CausticsSettings tableSettings(float rays, uint32_t seed) {
     return s;
 }
 
+// The built-in table scene without its base-colour textures (wood, plaster): the CPU reference reads
+// Material::baseColor only and ignores baseColorTexture, while the GPU multiplies by the texture (glTF
+// 2.0 sec. 3.9.2), so on the textured scene the GPU is 0.44x the reference on the table and 0.7x on the
+// wall (measured). Geometry, specular materials and lights are the built-in ones.
+scene::Scene untexturedTable() {
+    scene::Scene s = scene::makeBuiltinScene("builtin");
+    for (scene::Material& m : s.materials) m.baseColorTexture = -1;
+    return s;
+}
+
 TEST_F(CausticReference, MeasureBuiltinNoise) {
-    auto full = scene::makeBuiltin("builtin");
-    ASSERT_TRUE(full) << full.message();
-    const scene::Camera cam = full.value().cameras.at(0);
-    for (int light = -1; light < 2; ++light) {
-        scene::Scene sc = full.value();
-        if (light >= 0) sc.lights = {full.value().lights[size_t(light)]};
+    scene::Scene scene = untexturedTable();
+    const scene::Camera cam = scene.cameras.at(0);
+    std::vector<std::vector<glm::vec3>> refs;
+    for (uint32_t seed : {0u, 1u}) {
         reference::ReferenceOptions o;
         o.width = kTableWidth;
         o.height = kTableHeight;
         o.photonsPerLight = 2'000'000;
         o.maxDepth = 4;
-        auto ref = reference::renderCausticsReference(sc, cam, o);
+        o.seed = seed;
+        auto ref = reference::renderCausticsReference(scene, cam, o);
         ASSERT_TRUE(ref) << ref.message();
-        auto run = runCaustics(*device, sc, cam, kTableWidth, kTableHeight, tableSettings(16.0f, 1));
-        ASSERT_TRUE(run) << run.message();
-        double sg = 0, sr = 0, sg1 = 0, sr1 = 0;
-        for (size_t i = 0; i < ref.value().pixels.size(); ++i) {
-            float r = luminance(ref.value().pixels[i]), g = luminance(run.value().firstType[i]);
-            sg += g; sr += r;
-            if (r > 0.1f) { sg1 += g; sr1 += r; }
+        refs.push_back(ref.value().pixels);
+    }
+    std::vector<std::vector<glm::vec3>> gpus;
+    for (float rays : {1.0f, 4.0f, 16.0f})
+        for (uint32_t seed : {1u, 2u}) {
+            auto run = runCaustics(*device, scene, cam, kTableWidth, kTableHeight, tableSettings(rays, seed));
+            ASSERT_TRUE(run) << run.message();
+            gpus.push_back(run.value().firstType);
         }
-        std::printf("light %d: sum gpu/ref %.4f (all) %.4f (ref>0.1); L1 %.4f\n", light, sg / sr, sg1 / sr1,
-                    relativeL1Above(run.value().firstType, ref.value().pixels, 0.1f));
-        // Row-wise coarse dump: 16x12 blocks, ratio gpu/ref
-        for (uint32_t by = 0; by < 12; ++by) {
-            for (uint32_t bx = 0; bx < 16; ++bx) {
-                double g = 0, r = 0;
-                for (uint32_t y = by * 8; y < by * 8 + 8; ++y)
-                    for (uint32_t x = bx * 8; x < bx * 8 + 8; ++x) {
-                        g += luminance(run.value().firstType[y * kTableWidth + x]);
-                        r += luminance(ref.value().pixels[y * kTableWidth + x]);
-                    }
-                if (r < 0.5) std::printf("   .  "); else std::printf(" %5.2f", g / r);
-            }
-            std::printf("\n");
-        }
+    for (float thr : {0.03f, 0.1f, 0.3f}) {
+        uint32_t n = 0;
+        double rr = relativeL1Above(refs[1], refs[0], thr, &n);
+        std::printf("thr %.2f (%u px): ref-ref %.4f", thr, n, rr);
+        for (int k = 0; k < 3; ++k)
+            std::printf(" | gpu%d-gpu %.4f gpu-ref %.4f %.4f", 1 << (2 * k), relativeL1Above(gpus[2 * k + 1], gpus[2 * k], thr),
+                        relativeL1Above(gpus[2 * k], refs[0], thr), relativeL1Above(gpus[2 * k + 1], refs[0], thr));
+        std::printf("\n");
     }
 }
 
