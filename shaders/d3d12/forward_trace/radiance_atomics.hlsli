@@ -12,7 +12,12 @@ RWByteAddressBuffer radianceWords : register(RADIANCE_REGISTER, RADIANCE_SPACE);
 void addRadiance(uint pixel, float3 value) {
     for (uint c = 0u; c < 3u; ++c) {
         float v = clamp(value[c] * 65536.0f + 0.5f, 0.0f, 4.0e9f);
-        if (v >= 1.0f) radianceWords.InterlockedAdd(4u * (3u * pixel + c), uint(v));
+        if (v < 1.0f) continue;
+        uint add = uint(v);
+        uint old;
+        radianceWords.InterlockedAdd(4u * (3u * pixel + c), add, old);
+        // Wrapped past 2^32: pin at the maximum (as the GLSL does; any later wrap pins it again).
+        if (old > 0xFFFFFFFFu - add) radianceWords.InterlockedMax(4u * (3u * pixel + c), 0xFFFFFFFFu);
     }
 }
 #else

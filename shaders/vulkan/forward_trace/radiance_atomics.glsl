@@ -9,7 +9,12 @@ layout(set = RADIANCE_SET, binding = RADIANCE_BINDING, std430) buffer RadianceBu
 void addRadiance(uint pixel, vec3 value) {
     for (uint c = 0u; c < 3u; ++c) {
         float v = clamp(value[c] * 65536.0 + 0.5, 0.0, 4.0e9);
-        if (v >= 1.0) atomicAdd(radianceWords[3u * pixel + c], uint(v));
+        if (v < 1.0) continue;
+        uint add = uint(v);
+        uint old = atomicAdd(radianceWords[3u * pixel + c], add);
+        // The sum wrapped past 2^32: pin it at the maximum. Any later add that wraps again pins it
+        // again, so the word ends saturated whatever the order of the threads.
+        if (old > 0xFFFFFFFFu - add) atomicMax(radianceWords[3u * pixel + c], 0xFFFFFFFFu);
     }
 }
 #else

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -126,37 +125,38 @@ scene::Scene untexturedTable() {
     return s;
 }
 
-TEST_F(CausticReference, MeasureBuiltinNoise) {
+// Caustic pixels: reference luminance >= 0.1 cd/m^2 (454 of 12288 pixels; a lit white table reads
+// ~0.8). Noise measured on lavapipe (2026-11) at this threshold: reference vs reference (seeds 0/1,
+// 2M photons per light) 0.025; GPU vs GPU at 16 rays/texel (seeds 1/2) 0.134. For independent noise
+// the expected GPU-vs-reference error is sqrt(0.134^2 / 2 + 0.025^2 / 2) = 0.096; the bound is 1.5x that.
+// Measured GPU vs reference: 0.39 / 0.20 / 0.125 at 1 / 4 / 16 rays per texel (seed 2: 0.41 / 0.22 / 0.125).
+constexpr float kTableCausticThreshold = 0.1f;
+constexpr double kTableNoiseL1At16 = 0.096;
+constexpr double kTableBoundAt16 = 1.5 * kTableNoiseL1At16;
+
+TEST_F(CausticReference, BuiltinTableFirstTypeMatchesTheCpuReferenceAndConvergesWithRaysPerTexel) {
     scene::Scene scene = untexturedTable();
     const scene::Camera cam = scene.cameras.at(0);
-    std::vector<std::vector<glm::vec3>> refs;
-    for (uint32_t seed : {0u, 1u}) {
-        reference::ReferenceOptions o;
-        o.width = kTableWidth;
-        o.height = kTableHeight;
-        o.photonsPerLight = 2'000'000;
-        o.maxDepth = 4;
-        o.seed = seed;
-        auto ref = reference::renderCausticsReference(scene, cam, o);
-        ASSERT_TRUE(ref) << ref.message();
-        refs.push_back(ref.value().pixels);
+    reference::ReferenceOptions o;
+    o.width = kTableWidth;
+    o.height = kTableHeight;
+    o.photonsPerLight = 2'000'000;
+    o.maxDepth = 4;
+    auto ref = reference::renderCausticsReference(scene, cam, o);
+    ASSERT_TRUE(ref) << ref.message();
+    std::vector<double> errors;
+    for (float rays : {1.0f, 4.0f, 16.0f}) {
+        auto run = runCaustics(*device, scene, cam, kTableWidth, kTableHeight, tableSettings(rays, 1));
+        ASSERT_TRUE(run) << run.message();
+        uint32_t pixels = 0;
+        errors.push_back(relativeL1Above(run.value().firstType, ref.value().pixels, kTableCausticThreshold, &pixels));
+        ASSERT_GT(pixels, 200u) << "too few caustic pixels for a meaningful comparison";
+        std::printf("[ measured ] built-in table, rays per texel %.0f: relative L1 %.4f over %u caustic pixels\n", rays,
+                    errors.back(), pixels);
     }
-    std::vector<std::vector<glm::vec3>> gpus;
-    for (float rays : {1.0f, 4.0f, 16.0f})
-        for (uint32_t seed : {1u, 2u}) {
-            auto run = runCaustics(*device, scene, cam, kTableWidth, kTableHeight, tableSettings(rays, seed));
-            ASSERT_TRUE(run) << run.message();
-            gpus.push_back(run.value().firstType);
-        }
-    for (float thr : {0.03f, 0.1f, 0.3f}) {
-        uint32_t n = 0;
-        double rr = relativeL1Above(refs[1], refs[0], thr, &n);
-        std::printf("thr %.2f (%u px): ref-ref %.4f", thr, n, rr);
-        for (int k = 0; k < 3; ++k)
-            std::printf(" | gpu%d-gpu %.4f gpu-ref %.4f %.4f", 1 << (2 * k), relativeL1Above(gpus[2 * k + 1], gpus[2 * k], thr),
-                        relativeL1Above(gpus[2 * k], refs[0], thr), relativeL1Above(gpus[2 * k + 1], refs[0], thr));
-        std::printf("\n");
-    }
+    EXPECT_LT(errors[1], errors[0]);
+    EXPECT_LT(errors[2], errors[1]);
+    EXPECT_LT(errors[2], kTableBoundAt16);
 }
 
 // The built-in table scene's third light aims away from every specular object: it gets no map and
