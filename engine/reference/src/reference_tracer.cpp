@@ -112,7 +112,8 @@ uint64_t tracePhoton(const Context& ctx, Photon p, sh::Rng& rng, std::vector<glm
         glm::vec3 ns = glm::normalize((1.0f - hit.u - hit.v) * vn[0] + hit.u * vn[1] + hit.v * vn[2]);
         if (glm::dot(ns, ng) < 0.0f) ng = -ng;  // the authored normals say which side is "outside"
         const scene::Material& mat = ctx.scene.materials[ctx.world.materials[hit.triangle]];
-        glm::vec3 albedo = mat.baseColor;
+        const glm::vec2* uv = &ctx.world.uvs[size_t(hit.triangle) * 3];
+        glm::vec3 albedo = albedoAt(ctx.scene, mat, (1.0f - hit.u - hit.v) * uv[0] + hit.u * uv[1] + hit.v * uv[2]);
         float eps = rayEpsilon(x);
 
         if (mat.isSpecular()) {

@@ -1,5 +1,7 @@
 #include "world.h"
 
+#include <cmath>
+
 #include <limits>
 
 namespace caustics::reference {
@@ -37,6 +39,10 @@ WorldScene buildWorldScene(const scene::Scene& scene) {
             w.triangles.push_back(tri);
             w.normals.insert(w.normals.end(), {n[0], n[1], n[2]});
             w.materials.push_back(mesh.material);
+            for (int k = 0; k < 3; ++k) {
+                uint32_t idx = mesh.indices[i + k];
+                w.uvs.push_back(idx < mesh.uvs.size() ? mesh.uvs[idx] : glm::vec2(0.0f));
+            }
         }
     }
     w.boundsMin = lo;
@@ -50,6 +56,34 @@ WorldScene buildWorldScene(const scene::Scene& scene) {
 
 Sphere boundingSphere(const glm::vec3& min, const glm::vec3& max) {
     return Sphere{0.5f * (min + max), 0.5f * glm::length(max - min)};
+}
+
+namespace {
+// IEC 61966-2-1 sRGB transfer function, decoding one 8-bit channel.
+float srgbToLinear(uint8_t encoded) {
+    float c = float(encoded) / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+glm::vec3 texel(const scene::Texture& t, int x, int y) {
+    x = ((x % int(t.width)) + int(t.width)) % int(t.width);
+    y = ((y % int(t.height)) + int(t.height)) % int(t.height);
+    const uint8_t* p = &t.rgba8[(size_t(y) * t.width + size_t(x)) * 4];
+    return {srgbToLinear(p[0]), srgbToLinear(p[1]), srgbToLinear(p[2])};
+}
+}  // namespace
+
+glm::vec3 albedoAt(const scene::Scene& scene, const scene::Material& material, glm::vec2 uv) {
+    glm::vec3 albedo = material.baseColor;
+    if (material.baseColorTexture < 0 || size_t(material.baseColorTexture) >= scene.textures.size()) return albedo;
+    const scene::Texture& t = scene.textures[size_t(material.baseColorTexture)];
+    if (t.width == 0 || t.height == 0 || t.rgba8.size() < size_t(t.width) * t.height * 4) return albedo;
+    // Texel centres at half-integers (Vulkan spec 16.6 "Texel Filtering", linear filter).
+    float fx = uv.x * float(t.width) - 0.5f, fy = uv.y * float(t.height) - 0.5f;
+    int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+    float ax = fx - float(x0), ay = fy - float(y0);
+    glm::vec3 top = glm::mix(texel(t, x0, y0), texel(t, x0 + 1, y0), ax);
+    glm::vec3 bottom = glm::mix(texel(t, x0, y0 + 1), texel(t, x0 + 1, y0 + 1), ax);
+    return albedo * glm::mix(top, bottom, ay);
 }
 
 }  // namespace caustics::reference

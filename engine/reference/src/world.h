@@ -19,6 +19,7 @@ struct WorldScene {
     std::vector<Triangle> triangles;
     std::vector<glm::vec3> normals;      // 3 per triangle (unit, world space)
     std::vector<uint32_t> materials;     // per triangle
+    std::vector<glm::vec2> uvs;          // 3 per triangle ((0,0) where the mesh has none)
     std::unique_ptr<TriangleBvh> bvh;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
     glm::vec3 specularMin{0.0f}, specularMax{0.0f};
@@ -26,6 +27,10 @@ struct WorldScene {
 };
 
 WorldScene buildWorldScene(const scene::Scene& scene);
+
+// Linear albedo of `material` at `uv`: baseColor times its base-colour texture sampled as the GPU
+// passes do (bilinear, repeat, sRGB decoded, mip 0: textureLod(..., 0) in shaders/vulkan/scene).
+glm::vec3 albedoAt(const scene::Scene& scene, const scene::Material& material, glm::vec2 uv);
 
 Sphere boundingSphere(const glm::vec3& min, const glm::vec3& max);
 

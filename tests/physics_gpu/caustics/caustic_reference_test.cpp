@@ -115,27 +115,18 @@ CausticsSettings tableSettings(float rays, uint32_t seed) {
     return s;
 }
 
-// The built-in table scene without its base-colour textures (wood, plaster): the CPU reference reads
-// Material::baseColor only and ignores baseColorTexture, while the GPU multiplies by the texture (glTF
-// 2.0 sec. 3.9.2), so on the textured scene the GPU is 0.44x the reference on the table and 0.7x on the
-// wall (measured). Geometry, specular materials and lights are the built-in ones.
-scene::Scene untexturedTable() {
-    scene::Scene s = scene::makeBuiltinScene("builtin");
-    for (scene::Material& m : s.materials) m.baseColorTexture = -1;
-    return s;
-}
-
-// Caustic pixels: reference luminance >= 0.1 cd/m^2 (454 of 12288 pixels; a lit white table reads
-// ~0.8). Noise measured on lavapipe (2026-11) at this threshold: reference vs reference (seeds 0/1,
-// 2M photons per light) 0.025; GPU vs GPU at 16 rays/texel (seeds 1/2) 0.134. For independent noise
-// the expected GPU-vs-reference error is sqrt(0.134^2 / 2 + 0.025^2 / 2) = 0.096; the bound is 1.5x that.
-// Measured GPU vs reference: 0.39 / 0.20 / 0.125 at 1 / 4 / 16 rays per texel (seed 2: 0.41 / 0.22 / 0.125).
-constexpr float kTableCausticThreshold = 0.1f;
-constexpr double kTableNoiseL1At16 = 0.096;
+// Caustic pixels: reference luminance >= 0.05 cd/m^2 (406 of 12288 pixels on the textured table).
+// Noise measured on lavapipe (2026-11) at this threshold: reference vs reference (seeds 0/1, 2M photons
+// per light) 0.024; GPU vs GPU at 16 rays/texel (seeds 1/2) 0.126. For independent noise the expected
+// GPU-vs-reference error is sqrt(0.126^2 / 2 + 0.024^2 / 2) = 0.091; the bound is 1.5x that.
+// Measured GPU vs reference: 0.38 / 0.20 / 0.121 at 1 / 4 / 16 rays per texel (seed 2 at 16: 0.122),
+// about 1.3x the noise estimate: a small bias remains (see the closing note of the caustics work).
+constexpr float kTableCausticThreshold = 0.05f;
+constexpr double kTableNoiseL1At16 = 0.091;
 constexpr double kTableBoundAt16 = 1.5 * kTableNoiseL1At16;
 
 TEST_F(CausticReference, BuiltinTableFirstTypeMatchesTheCpuReferenceAndConvergesWithRaysPerTexel) {
-    scene::Scene scene = untexturedTable();
+    scene::Scene scene = scene::makeBuiltinScene("builtin");
     const scene::Camera cam = scene.cameras.at(0);
     reference::ReferenceOptions o;
     o.width = kTableWidth;
