@@ -11,6 +11,8 @@ namespace caustics {
 Result<SceneBindings> SceneBindings::create(rhi::IDevice& device, const scene::GpuScene& gpuScene,
                                             const scene::Scene& scene) {
     namespace s = scene_slots;
+    if (scene.instances.empty())
+        return makeError("scene '" + scene.name + "' has no mesh instances: nothing to render or trace");
     if (!gpuScene.tlas) return makeError("SceneBindings: the GPU scene has no TLAS (built with buildAccelStructs off?)");
     if (gpuScene.textures.empty()) return makeError("SceneBindings: the GPU scene has no texture (expected at least a white 1x1)");
     if (gpuScene.textures.size() > kMaxSceneTextures)

@@ -161,6 +161,20 @@ TEST_F(PassesBasic, ModuleRefusesAbsurdSettingsNamingTheField) {
     EXPECT_NE(module.message().find("maxSpecularDepth"), std::string::npos) << module.message();
 }
 
+TEST_F(PassesBasic, SceneWithoutInstancesIsRefusedNamingTheScene) {
+    scene::Scene scene = makeTinyScene();
+    scene.name = "empty level";
+    scene.instances.clear();
+    auto gpu = scene::GpuScene::create(*device, scene);
+    if (!gpu.ok()) {   // refusing at upload is as good, if the message says why
+        EXPECT_NE(gpu.message().find("instance"), std::string::npos) << gpu.message();
+        return;
+    }
+    auto module = CausticsModule::create(device, scene, *gpu);
+    ASSERT_FALSE(module.ok());
+    EXPECT_NE(module.message().find("'empty level' has no mesh instances"), std::string::npos) << module.message();
+}
+
 TEST_F(PassesBasic, SceneWithoutLightsRendersBlackDirectLight) {
     scene::Scene s = makeTinyScene();
     s.lights.clear();
