@@ -14,6 +14,11 @@ endforeach()
 install(DIRECTORY shaders/common DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 get_property(causticsInstallTargets GLOBAL PROPERTY CAUSTICS_INSTALL_TARGETS)
+# Exported as the in-tree aliases are spelled: caustics_passes -> caustics::passes.
+foreach(target ${causticsInstallTargets})
+  string(REGEX REPLACE "^caustics_" "" exportName "${target}")
+  set_target_properties(${target} PROPERTIES EXPORT_NAME "${exportName}")
+endforeach()
 install(TARGETS ${causticsInstallTargets} EXPORT causticsTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
