@@ -104,6 +104,17 @@ void maskUnsupported(const Capabilities& caps, VkStateInfo& s) {
     }
     if (s.stages == 0) s.stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
 }
+
+// Source and destination scopes of an image or buffer barrier. An aliasing barrier (memory another
+// resource used before, or an earlier frame) waits for all earlier commands, like D3D12's aliasing
+// barrier; the render graph asks for it.
+template <typename Barrier>
+void setStagesAndAccess(Barrier& barrier, const VkStateInfo& src, const VkStateInfo& dst, bool aliasing) {
+    barrier.srcStageMask = aliasing ? VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT : src.stages;
+    barrier.srcAccessMask = aliasing ? VK_ACCESS_2_MEMORY_WRITE_BIT : src.access;
+    barrier.dstStageMask = dst.stages;
+    barrier.dstAccessMask = dst.access;
+}
 }  // namespace
 
 void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::span<const BufferBarrier> buffers,
@@ -120,14 +131,7 @@ void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::
         maskUnsupported(caps, src);
         maskUnsupported(caps, dst);
         VkImageMemoryBarrier2 ib{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-        ib.srcStageMask = src.stages;
-        ib.srcAccessMask = src.access;
-        ib.dstStageMask = dst.stages;
-        ib.dstAccessMask = dst.access;
-        if (b.aliasing) {
-            ib.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-            ib.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-        }
+        setStagesAndAccess(ib, src, dst, b.aliasing);
         ib.oldLayout = b.before == ResourceState::Undefined ? VK_IMAGE_LAYOUT_UNDEFINED : src.layout;
         ib.newLayout = dst.layout;
         ib.srcQueueFamilyIndex = ib.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
@@ -144,14 +148,7 @@ void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::
         maskUnsupported(caps, src);
         maskUnsupported(caps, dst);
         VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-        bb.srcStageMask = src.stages;
-        bb.srcAccessMask = src.access;
-        bb.dstStageMask = dst.stages;
-        bb.dstAccessMask = dst.access;
-        if (b.aliasing) {
-            bb.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-            bb.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-        }
+        setStagesAndAccess(bb, src, dst, b.aliasing);
         bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         bb.buffer = buf->handle();
         bb.offset = 0;
