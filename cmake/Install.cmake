@@ -3,15 +3,15 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 install(DIRECTORY rhi/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-# Every library's public include folder, plus the math headers shared by C++, GLSL and HLSL
-# (installed as include/common/*.h, the path the C++ side includes them by).
+# Every library's public include folder; all headers live under include/caustics/ so none collides
+# with a host engine's own rhi/, scene/ or common/ headers. shaders/common is private (no public
+# header includes it).
 file(GLOB engineIncludeDirs LIST_DIRECTORIES true "${CMAKE_CURRENT_SOURCE_DIR}/engine/*/include")
 foreach(dir ${engineIncludeDirs} "${CMAKE_CURRENT_SOURCE_DIR}/passes/include")
   if(IS_DIRECTORY "${dir}")
     install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   endif()
 endforeach()
-install(DIRECTORY shaders/common DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 get_property(causticsInstallTargets GLOBAL PROPERTY CAUSTICS_INSTALL_TARGETS)
 # Exported as the in-tree aliases are spelled: caustics_passes -> caustics::passes.

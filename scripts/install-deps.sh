@@ -6,7 +6,7 @@ set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
-stamp=/var/lib/caustics-deps.v2   # bump when the package list changes
+stamp=/var/lib/caustics-deps.v3   # bump when the package list changes
 if [ -f "$stamp" ] && [ -z "${CAUSTICS_FORCE_DEPS:-}" ]; then exit 0; fi
 
 debian_uri() {
@@ -35,6 +35,7 @@ $SUDO apt-get install -y -q --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libvulkan-dev vulkan-validationlayers glslang-tools spirv-tools vulkan-tools \
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libglfw3-dev libopenimageio-dev openimageio-tools \
-  libgtest-dev libgmock-dev directx-headers-dev xvfb xauth
+  libgtest-dev libgmock-dev directx-headers-dev xvfb xauth \
+  ccache libimgui-dev g++-mingw-w64-x86-64-posix python3-matplotlib
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
 $SUDO touch "$stamp"

@@ -5,7 +5,7 @@
 #include "caustics/pass_shaders.h"
 #include <cstring>
 
-#include "rhi/log.h"
+#include "caustics/rhi/log.h"
 
 namespace caustics {
 namespace {

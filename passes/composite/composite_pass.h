@@ -4,8 +4,8 @@
 #include <optional>
 
 #include "caustics/gbuffer.h"
-#include "render_graph/render_graph.h"
-#include "rhi/device.h"
+#include "caustics/render_graph/render_graph.h"
+#include "caustics/rhi/device.h"
 
 namespace caustics {
 

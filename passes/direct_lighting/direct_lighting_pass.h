@@ -4,7 +4,7 @@
 // RGBA16_FLOAT linear radiance (cd/m^2 when lights are in candela/lux).
 #include "caustics/frame_context.h"
 #include "caustics/gbuffer.h"
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics {
 

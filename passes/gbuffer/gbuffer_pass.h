@@ -3,7 +3,7 @@
 // pulling from the GPU scene buffers; writes the six targets of caustics/gbuffer.h.
 #include "caustics/frame_context.h"
 #include "caustics/gbuffer.h"
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics {
 

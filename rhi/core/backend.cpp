@@ -1,4 +1,4 @@
-#include "rhi/device.h"
+#include "caustics/rhi/device.h"
 
 namespace caustics::rhi {
 

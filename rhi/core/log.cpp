@@ -1,4 +1,4 @@
-#include "rhi/log.h"
+#include "caustics/rhi/log.h"
 
 #include <cstdio>
 #include <mutex>

@@ -1,4 +1,4 @@
-#include "rhi/resource_state.h"
+#include "caustics/rhi/resource_state.h"
 
 namespace caustics::rhi {
 

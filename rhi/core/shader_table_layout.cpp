@@ -1,4 +1,4 @@
-#include "rhi/shader_table_layout.h"
+#include "caustics/rhi/shader_table_layout.h"
 
 namespace caustics::rhi {
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "d3d12_headers.h"
-#include "rhi/accel_struct.h"
+#include "caustics/rhi/accel_struct.h"
 
 namespace caustics::rhi::d3d12 {
 

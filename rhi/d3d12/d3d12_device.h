@@ -6,7 +6,7 @@
 
 #include "d3d12_headers.h"
 #include "descriptor_heaps.h"
-#include "rhi/device.h"
+#include "caustics/rhi/device.h"
 #include "runtime_library.h"
 #include "shader_compiler.h"
 

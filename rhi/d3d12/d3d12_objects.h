@@ -10,7 +10,7 @@
 #include "descriptor_heaps.h"
 #include "graphics_pipeline_desc.h"
 #include "root_signature_layout.h"
-#include "rhi/rhi.h"
+#include "caustics/rhi/rhi.h"
 #include "shader_table_image.h"
 
 namespace caustics::rhi::d3d12 {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "d3d12_headers.h"
-#include "rhi/result.h"
+#include "caustics/rhi/result.h"
 
 namespace caustics::rhi::d3d12 {
 

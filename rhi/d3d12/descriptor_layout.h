@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
-#include "rhi/binding.h"
-#include "rhi/result.h"
+#include "caustics/rhi/binding.h"
+#include "caustics/rhi/result.h"
 
 namespace caustics::rhi::d3d12 {
 

@@ -3,7 +3,7 @@
 // resource format (so one texture can be both a depth target and a shader resource), a DSV format and
 // an SRV format (D3D12 "Format support for typed UAV/SRV"; DXGI_FORMAT docs).
 #include "d3d12_headers.h"
-#include "rhi/format.h"
+#include "caustics/rhi/format.h"
 
 namespace caustics::rhi::d3d12 {
 

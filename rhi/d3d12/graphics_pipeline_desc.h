@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "d3d12_headers.h"
-#include "rhi/pipeline.h"
-#include "rhi/result.h"
+#include "caustics/rhi/pipeline.h"
+#include "caustics/rhi/result.h"
 
 namespace caustics::rhi::d3d12 {
 

@@ -6,7 +6,7 @@
 //  - UAV -> UAV on the same resource needs a UAV barrier (no transition is possible);
 //  - shader tables and AS build inputs are read as NON_PIXEL_SHADER_RESOURCE.
 #include "d3d12_headers.h"
-#include "rhi/resource_state.h"
+#include "caustics/rhi/resource_state.h"
 
 namespace caustics::rhi::d3d12 {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "rhi/result.h"
+#include "caustics/rhi/result.h"
 
 namespace caustics::rhi::d3d12 {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "rhi/result.h"
-#include "rhi/shader.h"
+#include "caustics/rhi/result.h"
+#include "caustics/rhi/shader.h"
 
 namespace caustics::rhi::d3d12 {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rhi/result.h"
+#include "caustics/rhi/result.h"
 #include "runtime_library.h"
 
 namespace caustics::rhi::d3d12 {

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "d3d12_headers.h"
-#include "rhi/result.h"
-#include "rhi/shader_table_layout.h"
-#include "rhi/state_object.h"
+#include "caustics/rhi/result.h"
+#include "caustics/rhi/shader_table_layout.h"
+#include "caustics/rhi/state_object.h"
 
 namespace caustics::rhi::d3d12 {
 

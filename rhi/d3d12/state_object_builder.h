@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "d3d12_headers.h"
-#include "rhi/result.h"
-#include "rhi/state_object.h"
+#include "caustics/rhi/result.h"
+#include "caustics/rhi/state_object.h"
 
 namespace caustics::rhi::d3d12 {
 

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "rhi/resources.h"
+#include "caustics/rhi/resources.h"
 
 namespace caustics::rhi::d3d12 {
 

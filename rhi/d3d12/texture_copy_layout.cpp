@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "rhi/shader_table_layout.h"   // alignUp
+#include "caustics/rhi/shader_table_layout.h"   // alignUp
 
 namespace caustics::rhi::d3d12 {
 

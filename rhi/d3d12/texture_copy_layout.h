@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <span>
 
-#include "rhi/resources.h"
-#include "rhi/result.h"
+#include "caustics/rhi/resources.h"
+#include "caustics/rhi/result.h"
 
 namespace caustics::rhi::d3d12 {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Entry points each backend library provides; only the factory sees them.
-#include "rhi/device.h"
+#include "caustics/rhi/device.h"
 
 namespace caustics::rhi::vulkan {
 Result<DeviceHandle> createDevice(const DeviceDesc& desc);

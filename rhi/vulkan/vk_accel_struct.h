@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "rhi/accel_struct.h"
+#include "caustics/rhi/accel_struct.h"
 #include "vk_context.h"
 
 namespace caustics::rhi::vulkan {

@@ -6,7 +6,7 @@
 #include <mutex>
 #include <vector>
 
-#include "rhi/binding.h"
+#include "caustics/rhi/binding.h"
 #include "vk_context.h"
 
 namespace caustics::rhi::vulkan {

@@ -2,7 +2,7 @@
 // Buffers: a VkBuffer with sub-allocated memory (or, when virtual, memory bound later from a heap).
 #include <vulkan/vulkan.h>
 
-#include "rhi/resources.h"
+#include "caustics/rhi/resources.h"
 #include "vk_context.h"
 #include "vk_memory.h"
 

@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "rhi/command_list.h"
+#include "caustics/rhi/command_list.h"
 #include "vk_context.h"
 
 namespace caustics::rhi::vulkan {

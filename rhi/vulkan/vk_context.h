@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rhi/device.h"
+#include "caustics/rhi/device.h"
 
 namespace caustics::rhi::vulkan {
 

@@ -16,7 +16,7 @@
 #include <functional>
 #include <memory>
 
-#include "rhi/device.h"
+#include "caustics/rhi/device.h"
 #include "vk_command_list.h"
 #include "vk_context.h"
 

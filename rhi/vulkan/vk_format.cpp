@@ -1,4 +1,4 @@
-#include "rhi/format.h"
+#include "caustics/rhi/format.h"
 #include "vk_texture.h"
 
 namespace caustics::rhi::vulkan {

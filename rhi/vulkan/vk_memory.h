@@ -9,8 +9,8 @@
 #include <mutex>
 #include <vector>
 
-#include "rhi/resources.h"
-#include "rhi/result.h"
+#include "caustics/rhi/resources.h"
+#include "caustics/rhi/result.h"
 #include "vk_block_allocator.h"
 
 namespace caustics::rhi::vulkan {

@@ -3,7 +3,7 @@
 // layout built from PipelineBindings and shader-module creation.
 #include <vulkan/vulkan.h>
 
-#include "rhi/pipeline.h"
+#include "caustics/rhi/pipeline.h"
 #include "vk_context.h"
 
 namespace caustics::rhi::vulkan {

@@ -3,7 +3,7 @@
 // tests/unit/rhi/resource_state_vk_test.cpp.
 #include <vulkan/vulkan.h>
 
-#include "rhi/resource_state.h"
+#include "caustics/rhi/resource_state.h"
 
 namespace caustics::rhi::vulkan {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "rhi/shader_table_layout.h"
-#include "rhi/state_object.h"
+#include "caustics/rhi/shader_table_layout.h"
+#include "caustics/rhi/state_object.h"
 #include "vk_context.h"
 
 namespace caustics::rhi::vulkan {

@@ -9,7 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "rhi/state_object.h"
+#include "caustics/rhi/state_object.h"
 #include "vk_context.h"
 #include "vk_pipeline.h"
 

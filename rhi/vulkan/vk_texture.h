@@ -5,7 +5,7 @@
 #include <map>
 #include <mutex>
 
-#include "rhi/resources.h"
+#include "caustics/rhi/resources.h"
 #include "vk_context.h"
 #include "vk_memory.h"
 

@@ -2,7 +2,7 @@
 // Timestamp queries: a VkQueryPool of TIMESTAMP queries, reset on the host at creation (hostQueryReset).
 #include <vulkan/vulkan.h>
 
-#include "rhi/command_list.h"
+#include "caustics/rhi/command_list.h"
 #include "vk_context.h"
 
 namespace caustics::rhi::vulkan {

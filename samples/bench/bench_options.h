@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "rhi/device.h"
+#include "caustics/rhi/device.h"
 
 namespace caustics::bench {
 

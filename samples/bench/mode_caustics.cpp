@@ -14,7 +14,7 @@
 #include "caustics/caustic_passes.h"
 #include "caustics/frame_context.h"
 #include "gbuffer/gbuffer_pass.h"
-#include "scene/builtin_scenes.h"
+#include "caustics/scene/builtin_scenes.h"
 
 namespace caustics::bench {
 namespace {

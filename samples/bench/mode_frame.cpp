@@ -12,8 +12,8 @@
 #include "bench_modes.h"
 #include "caustics/caustics_module.h"
 #include "frame_renderer.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gpu_scene.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/gpu_scene.h"
 
 namespace caustics::bench {
 namespace {

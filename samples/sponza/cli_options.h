@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "rhi/result.h"
+#include "caustics/rhi/result.h"
 
 namespace caustics::sample {
 

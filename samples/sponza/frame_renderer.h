@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "caustics/caustics_module.h"
-#include "render_graph/render_graph.h"
-#include "rhi/device.h"
+#include "caustics/render_graph/render_graph.h"
+#include "caustics/rhi/device.h"
 
 namespace caustics::sample {
 

@@ -12,9 +12,9 @@
 #include "cli_options.h"
 #include "frame_renderer.h"
 #include "image_file.h"
-#include "reference/reference_tracer.h"
-#include "rhi/rhi.h"
-#include "scene/gpu_scene.h"
+#include "caustics/reference/reference_tracer.h"
+#include "caustics/rhi/rhi.h"
+#include "caustics/scene/gpu_scene.h"
 #include "scene_source.h"
 #include "window_app.h"
 

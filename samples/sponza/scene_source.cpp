@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "scene/builtin_scenes.h"
-#include "scene/gltf.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/gltf.h"
 
 namespace caustics::sample {
 

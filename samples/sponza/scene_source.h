@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cli_options.h"
-#include "scene/scene.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics::sample {
 

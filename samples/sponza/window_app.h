@@ -4,8 +4,8 @@
 // to orbit, scroll or W/S to dolly, Esc to quit.
 #include "caustics/caustics_module.h"
 #include "cli_options.h"
-#include "rhi/device.h"
-#include "scene/scene.h"
+#include "caustics/rhi/device.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics::sample {
 

@@ -1,4 +1,4 @@
-#include "reference/bvh.h"
+#include "caustics/reference/bvh.h"
 
 #include <algorithm>
 #include <array>

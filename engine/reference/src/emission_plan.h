@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/scene.h"
+#include "caustics/scene/scene.h"
 #include "world.h"
 
 namespace caustics::reference {

@@ -1,4 +1,4 @@
-#include "reference/reference_tracer.h"
+#include "caustics/reference/reference_tracer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,8 +5,8 @@
 #include <memory>
 #include <vector>
 
-#include "reference/bvh.h"
-#include "scene/scene.h"
+#include "caustics/reference/bvh.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics::reference {
 

@@ -1,4 +1,4 @@
-#include "render_graph/access.h"
+#include "caustics/render_graph/access.h"
 
 namespace caustics::rg {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Steps of compileGraph() shared between its source files.
-#include "render_graph/compiled_plan.h"
+#include "caustics/render_graph/compiled_plan.h"
 
 namespace caustics::rg::detail {
 

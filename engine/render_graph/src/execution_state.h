@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics::rg {
 

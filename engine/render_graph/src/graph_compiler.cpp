@@ -5,7 +5,7 @@
 #include <string>
 
 #include "compiler_internal.h"
-#include "render_graph/memory_aliasing.h"
+#include "caustics/render_graph/memory_aliasing.h"
 
 namespace caustics::rg {
 namespace {

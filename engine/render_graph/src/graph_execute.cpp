@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "execution_state.h"
-#include "rhi/log.h"
+#include "caustics/rhi/log.h"
 
 namespace caustics::rg {
 

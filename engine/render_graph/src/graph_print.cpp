@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "render_graph/render_graph.h"
-#include "rhi/format.h"
+#include "caustics/render_graph/render_graph.h"
+#include "caustics/rhi/format.h"
 
 namespace caustics::rg {
 namespace {

@@ -1,4 +1,4 @@
-#include "render_graph/memory_aliasing.h"
+#include "caustics/render_graph/memory_aliasing.h"
 
 #include <algorithm>
 #include <numeric>

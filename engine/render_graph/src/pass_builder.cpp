@@ -1,6 +1,6 @@
-#include "render_graph/pass_builder.h"
+#include "caustics/render_graph/pass_builder.h"
 
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics::rg {
 

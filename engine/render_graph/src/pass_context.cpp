@@ -1,7 +1,7 @@
-#include "render_graph/pass_context.h"
+#include "caustics/render_graph/pass_context.h"
 
-#include "render_graph/graph_desc.h"
-#include "rhi/log.h"
+#include "caustics/render_graph/graph_desc.h"
+#include "caustics/rhi/log.h"
 
 namespace caustics::rg {
 

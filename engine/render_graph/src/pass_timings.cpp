@@ -1,4 +1,4 @@
-#include "render_graph/pass_timings.h"
+#include "caustics/render_graph/pass_timings.h"
 
 #include <algorithm>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 #include "execution_state.h"
 

@@ -2,9 +2,9 @@
 // directional light. Meshes are finely tessellated with smooth normals.
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/builtin_scenes.h"
-#include "scene/mesh_builder.h"
-#include "scene/mesh_utils.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/mesh_builder.h"
+#include "caustics/scene/mesh_utils.h"
 #include "scene_build.h"
 
 namespace caustics::scene {

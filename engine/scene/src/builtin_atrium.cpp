@@ -4,10 +4,10 @@
 // material is merged into one mesh (one BLAS), as Sponza's few large meshes are.
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/builtin_scenes.h"
-#include "scene/mesh_builder.h"
-#include "scene/mesh_utils.h"
-#include "scene/procedural_textures.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/mesh_builder.h"
+#include "caustics/scene/mesh_utils.h"
+#include "caustics/scene/procedural_textures.h"
 #include "scene_build.h"
 
 namespace caustics::scene {

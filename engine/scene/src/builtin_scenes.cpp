@@ -1,15 +1,15 @@
 // The table scene after the paper's Figures 1-3 and the "Modified Sponza" placement. Layout in
 // metres with the table top at y = 0; intensities in candela chosen for exposure 1: the caustic
 // spot gives about 3 lx on the table (a white diffuse surface then has radiance ~0.8/pi * 3 ~ 0.8).
-#include "scene/builtin_scenes.h"
+#include "caustics/scene/builtin_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "rhi/log.h"
-#include "scene/gltf.h"
-#include "scene/mesh_builder.h"
-#include "scene/mesh_utils.h"
-#include "scene/procedural_textures.h"
+#include "caustics/rhi/log.h"
+#include "caustics/scene/gltf.h"
+#include "caustics/scene/mesh_builder.h"
+#include "caustics/scene/mesh_utils.h"
+#include "caustics/scene/procedural_textures.h"
 #include "scene_build.h"
 
 namespace caustics::scene {

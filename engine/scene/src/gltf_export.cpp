@@ -9,7 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gltf_internal.h"
-#include "scene/gltf.h"
+#include "caustics/scene/gltf.h"
 
 namespace caustics::scene {
 

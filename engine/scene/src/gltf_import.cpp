@@ -10,10 +10,10 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gltf_internal.h"
-#include "rhi/log.h"
-#include "scene/gltf.h"
-#include "scene/mesh_utils.h"
-#include "scene/procedural_textures.h"
+#include "caustics/rhi/log.h"
+#include "caustics/scene/gltf.h"
+#include "caustics/scene/mesh_utils.h"
+#include "caustics/scene/procedural_textures.h"
 
 namespace caustics::scene {
 

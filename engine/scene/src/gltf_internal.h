@@ -18,7 +18,7 @@
 #pragma GCC diagnostic pop
 #endif
 
-#include "rhi/result.h"
+#include "caustics/rhi/result.h"
 
 namespace caustics::scene::gltf {
 
@@ -52,7 +52,7 @@ int intOr(const tinygltf::Value& object, const char* key, int fallback);
 
 }  // namespace caustics::scene::gltf
 
-#include "scene/scene.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics::scene::gltf {
 

@@ -1,7 +1,7 @@
-#include "scene/gpu_scene.h"
+#include "caustics/scene/gpu_scene.h"
 
-#include "scene/mesh_utils.h"
-#include "scene/procedural_textures.h"
+#include "caustics/scene/mesh_utils.h"
+#include "caustics/scene/procedural_textures.h"
 
 namespace caustics::scene {
 

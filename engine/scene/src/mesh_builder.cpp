@@ -1,11 +1,11 @@
 // Procedural shapes. Surfaces of revolution are built from profiles in the (r, y) half-plane: a
 // profile point's surface normal is d(profile) x d(theta), so walking the profile "up the outside"
 // gives outward normals (checked by the unit tests' closed-mesh orientation test).
-#include "scene/mesh_builder.h"
+#include "caustics/scene/mesh_builder.h"
 
 #include <cmath>
 
-#include "scene/mesh_utils.h"
+#include "caustics/scene/mesh_utils.h"
 
 namespace caustics::scene {
 

@@ -1,4 +1,4 @@
-#include "scene/mesh_utils.h"
+#include "caustics/scene/mesh_utils.h"
 
 #include <algorithm>
 #include <numeric>

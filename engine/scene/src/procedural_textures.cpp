@@ -1,4 +1,4 @@
-#include "scene/procedural_textures.h"
+#include "caustics/scene/procedural_textures.h"
 
 #include <algorithm>
 #include <cmath>

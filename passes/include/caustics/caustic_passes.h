@@ -21,10 +21,10 @@
 #include "caustics/caustics_settings.h"
 #include "caustics/gbuffer.h"
 #include "caustics/scene_bindings.h"
-#include "render_graph/render_graph.h"
-#include "rhi/device.h"
-#include "scene/gpu_scene.h"
-#include "scene/scene.h"
+#include "caustics/render_graph/render_graph.h"
+#include "caustics/rhi/device.h"
+#include "caustics/scene/gpu_scene.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "rhi/result.h"
+#include "caustics/rhi/result.h"
 
 namespace caustics {
 

@@ -7,9 +7,9 @@
 #include "caustics/camera_constants.h"
 #include "caustics/caustics_settings.h"
 #include "caustics/scene_bindings.h"
-#include "rhi/device.h"
-#include "scene/gpu_scene.h"
-#include "scene/scene.h"
+#include "caustics/rhi/device.h"
+#include "caustics/scene/gpu_scene.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics {
 

@@ -18,9 +18,9 @@
 // optics.y = (1 - metallic) * transmission                    (KHR_materials_transmission)
 #include <cstdint>
 
-#include "render_graph/resource_handle.h"
-#include "rhi/format.h"
-#include "rhi/resources.h"
+#include "caustics/render_graph/resource_handle.h"
+#include "caustics/rhi/format.h"
+#include "caustics/rhi/resources.h"
 
 namespace caustics {
 

@@ -7,10 +7,10 @@
 #include <span>
 #include <string_view>
 
-#include "rhi/result.h"
-#include "rhi/device.h"
-#include "rhi/shader.h"
-#include "rhi/state_object.h"
+#include "caustics/rhi/result.h"
+#include "caustics/rhi/device.h"
+#include "caustics/rhi/shader.h"
+#include "caustics/rhi/state_object.h"
 
 namespace caustics::pass_shaders {
 

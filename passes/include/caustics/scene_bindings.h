@@ -4,10 +4,10 @@
 // it, by default as set 0. Built once per scene; the lights buffer is owned here.
 #include <cstdint>
 
-#include "rhi/device.h"
-#include "rhi/result.h"
-#include "scene/gpu_scene.h"
-#include "scene/scene.h"
+#include "caustics/rhi/device.h"
+#include "caustics/rhi/result.h"
+#include "caustics/scene/gpu_scene.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics {
 

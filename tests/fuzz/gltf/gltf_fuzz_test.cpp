@@ -10,10 +10,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "rhi/log.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf.h"
-#include "scene/procedural_textures.h"
+#include "caustics/rhi/log.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/gltf.h"
+#include "caustics/scene/procedural_textures.h"
 
 namespace caustics::scene {
 namespace {

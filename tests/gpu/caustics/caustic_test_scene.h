@@ -3,7 +3,7 @@
 // directional light, seen obliquely so that the focal spot appears both directly (first type) and
 // through the sphere (second type).
 #include "caustics/caustics_settings.h"
-#include "scene/builtin_scenes.h"
+#include "caustics/scene/builtin_scenes.h"
 
 namespace caustics::test {
 

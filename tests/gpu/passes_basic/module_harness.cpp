@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics::test {
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "caustics/caustics_module.h"
-#include "rhi/device.h"
-#include "scene/gpu_scene.h"
+#include "caustics/rhi/device.h"
+#include "caustics/scene/gpu_scene.h"
 
 namespace caustics::test {
 

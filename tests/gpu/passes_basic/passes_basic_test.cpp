@@ -11,7 +11,7 @@
 #include "common/camera.h"
 #include "gpu_test.h"
 #include "module_harness.h"
-#include "scene/mesh_builder.h"
+#include "caustics/scene/mesh_builder.h"
 
 namespace caustics::test {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "rhi/rhi.h"
+#include "caustics/rhi/rhi.h"
 
 namespace caustics::test {
 

@@ -7,7 +7,7 @@
 
 #include "four_pass_recording.h"
 #include "gpu_test.h"
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics::test {
 namespace {

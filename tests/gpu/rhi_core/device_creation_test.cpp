@@ -1,7 +1,7 @@
 // Device creation refuses a device that lacks a required extension, naming it, without crashing.
 #include <gtest/gtest.h>
 
-#include "rhi/rhi.h"
+#include "caustics/rhi/rhi.h"
 
 namespace caustics::test {
 namespace {

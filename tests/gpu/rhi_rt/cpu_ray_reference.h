@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "rhi/accel_struct.h"
+#include "caustics/rhi/accel_struct.h"
 
 namespace caustics::test {
 

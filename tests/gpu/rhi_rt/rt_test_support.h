@@ -11,7 +11,7 @@
 
 #include "cpu_ray_reference.h"
 #include "gpu_test.h"   // caustics::test_shaders::spirv: tests/gpu/shaders/** embedded by gpu/support
-#include "rhi/rhi.h"
+#include "caustics/rhi/rhi.h"
 
 namespace caustics::test {
 

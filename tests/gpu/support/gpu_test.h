@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rhi/rhi.h"
+#include "caustics/rhi/rhi.h"
 
 namespace caustics::test_shaders {
 // Embedded SPIR-V of tests/gpu/shaders/<name> (e.g. "rhi_core/pattern.comp"); empty if unknown.

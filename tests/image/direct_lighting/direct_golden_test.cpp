@@ -22,7 +22,7 @@
 
 #include "gpu_test.h"
 #include "module_harness.h"
-#include "scene/builtin_scenes.h"
+#include "caustics/scene/builtin_scenes.h"
 
 namespace caustics::test {
 namespace {

@@ -3,8 +3,8 @@
 // read a reference image back in world units.
 #include <functional>
 
-#include "reference/reference_tracer.h"
-#include "scene/scene.h"
+#include "caustics/reference/reference_tracer.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics::physics {
 

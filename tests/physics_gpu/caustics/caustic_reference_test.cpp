@@ -9,8 +9,8 @@
 #include "caustic_harness.h"
 #include "gpu_test.h"
 #include "image_analysis.h"
-#include "reference/reference_tracer.h"
-#include "scene/builtin_scenes.h"
+#include "caustics/reference/reference_tracer.h"
+#include "caustics/scene/builtin_scenes.h"
 
 namespace caustics::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "common/camera.h"
-#include "scene/scene.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics::test {
 

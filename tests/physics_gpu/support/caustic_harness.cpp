@@ -5,7 +5,7 @@
 #include "caustics/frame_context.h"
 #include "caustics/scene_bindings.h"
 #include "gbuffer/gbuffer_pass.h"
-#include "scene/gpu_scene.h"
+#include "caustics/scene/gpu_scene.h"
 
 namespace caustics::test {
 namespace {

@@ -7,8 +7,8 @@
 #include <glm/glm.hpp>
 
 #include "caustics/caustic_passes.h"
-#include "rhi/rhi.h"
-#include "scene/scene.h"
+#include "caustics/rhi/rhi.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics::test {
 

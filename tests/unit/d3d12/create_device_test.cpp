@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "rhi/device.h"
+#include "caustics/rhi/device.h"
 
 namespace caustics::rhi {
 namespace {

@@ -4,8 +4,8 @@
 #include <random>
 
 #include "fake_memory_sizer.h"
-#include "render_graph/memory_aliasing.h"
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/memory_aliasing.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics::rg {
 namespace {

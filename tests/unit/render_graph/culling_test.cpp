@@ -3,7 +3,7 @@
 
 #include "fake_memory_sizer.h"
 #include "fake_rhi_objects.h"
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics::rg {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "recording_device.h"
-#include "render_graph/render_graph.h"
+#include "caustics/render_graph/render_graph.h"
 
 namespace caustics::rg {
 namespace {

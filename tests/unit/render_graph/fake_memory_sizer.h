@@ -1,8 +1,8 @@
 #pragma once
 // Test double for memory sizes: tightly packed texels / the buffer's byte size, with a fixed
 // alignment, so aliasing tests know every size without a device.
-#include "render_graph/memory_sizer.h"
-#include "rhi/format.h"
+#include "caustics/render_graph/memory_sizer.h"
+#include "caustics/rhi/format.h"
 
 namespace caustics::rg::test {
 

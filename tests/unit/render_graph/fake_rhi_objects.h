@@ -3,8 +3,8 @@
 // their desc (the graph never looks inside an imported object).
 #include <memory>
 
-#include "rhi/accel_struct.h"
-#include "rhi/resources.h"
+#include "caustics/rhi/accel_struct.h"
+#include "caustics/rhi/resources.h"
 
 namespace caustics::rg::test {
 

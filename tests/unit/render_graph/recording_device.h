@@ -8,7 +8,7 @@
 
 #include "fake_memory_sizer.h"
 #include "fake_rhi_objects.h"
-#include "rhi/device.h"
+#include "caustics/rhi/device.h"
 
 namespace caustics::rg::test {
 

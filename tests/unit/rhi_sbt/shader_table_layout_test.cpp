@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "rhi/shader_table_layout.h"
+#include "caustics/rhi/shader_table_layout.h"
 
 namespace caustics::rhi {
 namespace {

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "gltf_test_files.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf.h"
-#include "scene/mesh_builder.h"
-#include "scene/mesh_utils.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/gltf.h"
+#include "caustics/scene/mesh_builder.h"
+#include "caustics/scene/mesh_utils.h"
 
 namespace caustics::scene {
 namespace {

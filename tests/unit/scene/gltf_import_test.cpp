@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include "gltf_test_files.h"
-#include "rhi/log.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf.h"
-#include "scene/mesh_utils.h"
+#include "caustics/rhi/log.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/gltf.h"
+#include "caustics/scene/mesh_utils.h"
 
 namespace caustics::scene {
 namespace {

@@ -6,10 +6,10 @@
 #include <gtest/gtest.h>
 
 #include "gltf_test_files.h"
-#include "rhi/log.h"
-#include "scene/builtin_scenes.h"
-#include "scene/gltf.h"
-#include "scene/procedural_textures.h"
+#include "caustics/rhi/log.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/gltf.h"
+#include "caustics/scene/procedural_textures.h"
 
 namespace caustics::scene {
 namespace {

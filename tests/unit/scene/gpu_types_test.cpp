@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "scene/builtin_scenes.h"
-#include "scene/gpu_scene.h"
-#include "scene/mesh_utils.h"
+#include "caustics/scene/builtin_scenes.h"
+#include "caustics/scene/gpu_scene.h"
+#include "caustics/scene/mesh_utils.h"
 
 namespace caustics::scene {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/mesh_builder.h"
-#include "scene/mesh_utils.h"
+#include "caustics/scene/mesh_builder.h"
+#include "caustics/scene/mesh_utils.h"
 
 namespace caustics::scene {
 namespace {

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rhi/shader.h"
+#include "caustics/rhi/shader.h"
 
 namespace caustics::hlsl {
 

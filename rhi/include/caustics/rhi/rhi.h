@@ -1,0 +1,15 @@
+#pragma once
+// Umbrella header of the caustics render-hardware interface.
+#include "caustics/rhi/accel_struct.h"
+#include "caustics/rhi/binding.h"
+#include "caustics/rhi/command_list.h"
+#include "caustics/rhi/device.h"
+#include "caustics/rhi/format.h"
+#include "caustics/rhi/log.h"
+#include "caustics/rhi/pipeline.h"
+#include "caustics/rhi/resource_state.h"
+#include "caustics/rhi/resources.h"
+#include "caustics/rhi/result.h"
+#include "caustics/rhi/shader.h"
+#include "caustics/rhi/shader_table_layout.h"
+#include "caustics/rhi/state_object.h"
