@@ -11,6 +11,7 @@
 #include "common/specular_event.h"
 #include "common/camera.h"
 #include "common/emission.h"
+#include "common/bsdf.h"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) buffer Out { float4 values[]; };
@@ -41,5 +42,8 @@ void main() {
               photonFluxOrthographic(5.0f, orthographicTexelArea(2.0f, 512.0f), 2.0f) +
               spotAttenuation(0.9f, 0.95f, 0.8f) + spotLightFlux(1.0f, 0.95f, 0.8f) + perspectiveFrustumSolidAngle(1.0f);
     float3 c = cameraRayDirection(cam, proj.pixel) + absorb + lerp(t, ev.weight, 0.5f) + saturate(dir);
+    BrdfMaterial brdf = makeBrdfMaterial(splat3(0.5f), u.x, u.y, 0.0f, gltfDielectricF0(1.0f, 1.5f));
+    c += evalGltfBrdf(brdf, onb.n, dir, normalize(float3(0.0f, 0.2f, 1.0f))) +
+         evalGltfBrdf(lambertOnlyBrdfMaterial(splat3(1.0f)), onb.n, onb.n, onb.n) + receiverBrdf(c, 0.0f, 1.0f, onb.n, onb.n, onb.n);
     values[id] = float4(c, f + w + e + (ok ? 1.0f : 0.0f) + ggxD(0.9f, 0.1f));
 }
