@@ -5,6 +5,7 @@
 #include <string>
 #include <thread>
 
+#include "common/bsdf.h"
 #include "common/camera.h"
 #include "common/emission.h"
 #include "common/rng.h"
@@ -33,8 +34,6 @@ struct Context {
     float nearPlane;
     ReferenceOptions options;
 };
-
-float rayEpsilon(const glm::vec3& p) { return 1e-4f * (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})); }
 
 sh::OpticalMaterial opticalMaterial(const scene::Material& m) {
     sh::OpticalMaterial o;
@@ -76,9 +75,17 @@ Photon emitPhoton(const scene::Light& light, const EmissionMap& map, uint32_t te
     return p;
 }
 
-// Light-tracing estimator (shaders/common/camera.h) with a ray-cast visibility test.
+// The receiver's BRDF (shaders/common/bsdf.h), as the GPU forward trace builds it: a specular
+// material reaches a diffuse vertex only through its diffuse layer, already weighted by the event.
+sh::BrdfMaterial receiverBrdfMaterial(const scene::Material& m, const glm::vec3& albedo) {
+    if (m.isSpecular()) return sh::lambertOnlyBrdfMaterial(albedo);
+    return sh::makeBrdfMaterial(albedo, m.metallic, m.roughness, m.transmission, sh::gltfDielectricF0(m.specular, m.ior));
+}
+
+// Light-tracing estimator (shaders/common/camera.h) with a ray-cast visibility test. incoming: unit,
+// back along the photon's last segment (the BRDF's wi).
 bool splat(const Context& ctx, const glm::vec3& x, const glm::vec3& nFacing, const glm::vec3& flux,
-           const glm::vec3& albedo, std::vector<glm::vec3>& image) {
+           const glm::vec3& incoming, const sh::BrdfMaterial& brdf, std::vector<glm::vec3>& image) {
     sh::CameraProjection proj = sh::projectToCamera(ctx.camera, x);
     if (!proj.valid || proj.depth < ctx.nearPlane) return false;
     glm::vec3 toEye = (ctx.camera.eye - x) / proj.distance;
@@ -91,7 +98,7 @@ bool splat(const Context& ctx, const glm::vec3& x, const glm::vec3& nFacing, con
     float factor = sh::pinholeSplatFactor(ctx.camera, proj.cosTheta, cosSurface, proj.distance);
     uint32_t px = std::min(uint32_t(proj.pixel.x), ctx.options.width - 1);
     uint32_t py = std::min(uint32_t(proj.pixel.y), ctx.options.height - 1);
-    image[size_t(py) * ctx.options.width + px] += flux * (albedo * sh::kInvPi) * factor;
+    image[size_t(py) * ctx.options.width + px] += flux * sh::evalGltfBrdf(brdf, nFacing, incoming, toEye) * factor;
     return true;
 }
 
@@ -105,15 +112,9 @@ uint64_t tracePhoton(const Context& ctx, Photon p, sh::Rng& rng, std::vector<glm
         RayHit hit;
         if (!ctx.world.bvh->intersect(p.origin, p.direction, 0.0f, 1e30f, hit)) break;
         if (sigma != glm::vec3(0.0f)) p.flux *= sh::beerLambert(sigma, hit.t);
-        const Triangle& tri = ctx.world.triangles[hit.triangle];
-        glm::vec3 x = p.origin + hit.t * p.direction;
-        glm::vec3 ng = glm::normalize(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
-        const glm::vec3* vn = &ctx.world.normals[size_t(hit.triangle) * 3];
-        glm::vec3 ns = glm::normalize((1.0f - hit.u - hit.v) * vn[0] + hit.u * vn[1] + hit.v * vn[2]);
-        if (glm::dot(ns, ng) < 0.0f) ng = -ng;  // the authored normals say which side is "outside"
-        const scene::Material& mat = ctx.scene.materials[ctx.world.materials[hit.triangle]];
-        const glm::vec2* uv = &ctx.world.uvs[size_t(hit.triangle) * 3];
-        glm::vec3 albedo = albedoAt(ctx.scene, mat, (1.0f - hit.u - hit.v) * uv[0] + hit.u * uv[1] + hit.v * uv[2]);
+        SurfacePoint sp = surfaceAt(ctx.scene, ctx.world, p.origin, p.direction, hit);
+        const glm::vec3 x = sp.position, ns = sp.shadingNormal, ng = sp.geometricNormal, albedo = sp.albedo;
+        const scene::Material& mat = *sp.material;
         float eps = rayEpsilon(x);
 
         if (mat.isSpecular()) {
@@ -140,14 +141,17 @@ uint64_t tracePhoton(const Context& ctx, Photon p, sh::Rng& rng, std::vector<glm
             // The diffuse base layer of a partly transmissive/metallic material: a diffuse vertex.
         }
         glm::vec3 nFacing = glm::dot(ns, p.direction) < 0.0f ? ns : -ns;
+        sh::BrdfMaterial brdf = receiverBrdfMaterial(mat, albedo);
+        glm::vec3 incoming = -p.direction;
         if (o.mode == ReferenceMode::AllLightPaths || specularEvents > 0) {
-            splats += splat(ctx, x, nFacing, p.flux, albedo, image) ? 1 : 0;
+            splats += splat(ctx, x, nFacing, p.flux, incoming, brdf, image) ? 1 : 0;
         }
         if (o.mode == ReferenceMode::CausticsOnly || diffuseBounces >= o.maxDepth) break;
-        // Lambertian bounce: cosine sampling makes the weight f cos / pdf = albedo.
+        // Bounce by cosine sampling: the weight f cos / pdf = pi f (= albedo for pure Lambert).
+        // f(wi, wo) with wi the photon's arrival and wo the new direction (the BRDF is reciprocal).
         ++diffuseBounces;
         p.direction = sh::onbToWorld(sh::onbFromNormal(nFacing), sh::sampleCosineHemisphere(sh::rngNextFloat2(rng)));
-        p.flux *= albedo;
+        p.flux *= sh::kPi * sh::evalGltfBrdf(brdf, nFacing, incoming, p.direction);
         p.origin = x + (glm::dot(p.direction, ng) > 0.0f ? ng : -ng) * eps;
         sigma = glm::vec3(0.0f);
     }
@@ -158,17 +162,7 @@ uint64_t tracePhoton(const Context& ctx, Photon p, sh::Rng& rng, std::vector<glm
 
 Result<ReferenceImage> renderCausticsReference(const scene::Scene& scene, const scene::Camera& camera,
                                                const ReferenceOptions& options) {
-    if (options.width == 0 || options.height == 0) return makeError("renderCausticsReference: image size is zero");
-    if (glm::length(camera.target - camera.eye) <= 0.0f)
-        return makeError("renderCausticsReference: camera eye and target coincide");
-    for (const scene::Mesh& mesh : scene.meshes) {
-        if (mesh.material >= scene.materials.size())
-            return makeError("renderCausticsReference: mesh '" + mesh.name + "' has material index " +
-                             std::to_string(mesh.material) + " out of range");
-        for (uint32_t idx : mesh.indices)
-            if (idx >= mesh.positions.size())
-                return makeError("renderCausticsReference: mesh '" + mesh.name + "' has an index out of range");
-    }
+    CAUSTICS_CHECK(checkReferenceInputs("renderCausticsReference", scene, camera, options.width, options.height));
 
     WorldScene world = buildWorldScene(scene);
     Context ctx{scene, world,

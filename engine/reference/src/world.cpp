@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <limits>
+#include <string>
 
 namespace caustics::reference {
 
@@ -84,6 +85,37 @@ glm::vec3 albedoAt(const scene::Scene& scene, const scene::Material& material, g
     glm::vec3 top = glm::mix(texel(t, x0, y0), texel(t, x0 + 1, y0), ax);
     glm::vec3 bottom = glm::mix(texel(t, x0, y0 + 1), texel(t, x0 + 1, y0 + 1), ax);
     return albedo * glm::mix(top, bottom, ay);
+}
+
+SurfacePoint surfaceAt(const scene::Scene& scene, const WorldScene& world, const glm::vec3& origin,
+                       const glm::vec3& dir, const RayHit& hit) {
+    const Triangle& tri = world.triangles[hit.triangle];
+    const glm::vec3 w(1.0f - hit.u - hit.v, hit.u, hit.v);
+    const glm::vec3* vn = &world.normals[size_t(hit.triangle) * 3];
+    const glm::vec2* uv = &world.uvs[size_t(hit.triangle) * 3];
+    SurfacePoint s;
+    s.position = origin + hit.t * dir;
+    s.shadingNormal = glm::normalize(w.x * vn[0] + w.y * vn[1] + w.z * vn[2]);
+    s.geometricNormal = glm::normalize(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+    if (glm::dot(s.shadingNormal, s.geometricNormal) < 0.0f) s.geometricNormal = -s.geometricNormal;
+    s.material = &scene.materials[world.materials[hit.triangle]];
+    s.albedo = albedoAt(scene, *s.material, w.x * uv[0] + w.y * uv[1] + w.z * uv[2]);
+    return s;
+}
+
+Status checkReferenceInputs(const char* who, const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
+                            uint32_t height) {
+    const std::string name(who);
+    if (width == 0 || height == 0) return makeError(name + ": image size is zero");
+    if (glm::length(camera.target - camera.eye) <= 0.0f) return makeError(name + ": camera eye and target coincide");
+    for (const scene::Mesh& mesh : scene.meshes) {
+        if (mesh.material >= scene.materials.size())
+            return makeError(name + ": mesh '" + mesh.name + "' has material index " + std::to_string(mesh.material) +
+                             " out of range");
+        for (uint32_t idx : mesh.indices)
+            if (idx >= mesh.positions.size()) return makeError(name + ": mesh '" + mesh.name + "' has an index out of range");
+    }
+    return okStatus();
 }
 
 }  // namespace caustics::reference

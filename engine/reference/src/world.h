@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "caustics/reference/bvh.h"
+#include "caustics/rhi/result.h"
 #include "caustics/scene/scene.h"
 
 namespace caustics::reference {
@@ -31,6 +32,28 @@ WorldScene buildWorldScene(const scene::Scene& scene);
 // Linear albedo of `material` at `uv`: baseColor times its base-colour texture sampled as the GPU
 // passes do (bilinear, repeat, sRGB decoded, mip 0: textureLod(..., 0) in shaders/vulkan/scene).
 glm::vec3 albedoAt(const scene::Scene& scene, const scene::Material& material, glm::vec2 uv);
+
+// Offset for rays leaving a surface point, relative to the coordinates' magnitude (float spacing).
+inline float rayEpsilon(const glm::vec3& p) {
+    return 1e-4f * (1.0f + glm::max(glm::abs(p.x), glm::max(glm::abs(p.y), glm::abs(p.z))));
+}
+
+// The surface a ray (origin + t dir) hit: shading normal interpolated from the vertices, geometric
+// normal turned to the shading normal's side (the authored normals say which side is outside).
+struct SurfacePoint {
+    glm::vec3 position;
+    glm::vec3 shadingNormal;
+    glm::vec3 geometricNormal;
+    const scene::Material* material;
+    glm::vec3 albedo;   // linear, base colour x texture (albedoAt)
+};
+SurfacePoint surfaceAt(const scene::Scene& scene, const WorldScene& world, const glm::vec3& origin,
+                       const glm::vec3& dir, const RayHit& hit);
+
+// Refuses what the reference renderers cannot trace (empty image, degenerate camera, indices or
+// material indices out of range), naming `who` and the mesh.
+Status checkReferenceInputs(const char* who, const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
+                            uint32_t height);
 
 Sphere boundingSphere(const glm::vec3& min, const glm::vec3& max);
 

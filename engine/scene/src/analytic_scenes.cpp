@@ -14,7 +14,11 @@ using namespace build;
 static Scene makePlaneScene(const std::string& name, const AnalyticSceneDesc& d) {
     Scene scene;
     scene.name = name;
-    uint32_t plane = addMaterial(scene, diffuse("diffuse plane", glm::vec3(d.planeAlbedo), -1, 1.0f));
+    // A Lambertian receiver: KHR_materials_specular factor 0 leaves no specular layer in the shared
+    // BRDF (shaders/common/bsdf.h), so the physics tests' analytic radiance rho E / pi holds exactly.
+    Material planeMaterial = diffuse("diffuse plane", glm::vec3(d.planeAlbedo), -1, 1.0f);
+    planeMaterial.specular = 0.0f;
+    uint32_t plane = addMaterial(scene, planeMaterial);
     addObject(scene, makePlane(d.planeHalfSize, d.planeHalfSize, 8), plane, "plane");
     Light sun;
     sun.name = "directional";

@@ -37,16 +37,22 @@ inline constexpr uint32_t kStatSpheres = 3;            // backward hits that bec
 inline constexpr uint32_t kStatRaysPerLight = 4;
 inline constexpr uint32_t kStatCount = kStatRaysPerLight + kMaxCausticLights;
 
-// One stored forward diffuse hit (std430, 48 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
+// One stored forward diffuse hit (std430, 80 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
+// It carries the photon's flux, its incoming direction and the receiver's glTF BRDF parameters, so a
+// gather evaluates the same BRDF as the splat and direct lighting (shaders/common/bsdf.h).
 struct CausticHit {
     glm::vec3 position;
-    uint32_t objectId;       // instance index + 1
-    glm::vec3 normal;        // unit, on the side the photon arrived from
+    uint32_t objectId;           // instance index + 1
+    glm::vec3 normal;            // unit shading normal, on the side the photon arrived from
     uint32_t light;
-    glm::vec3 fluxBsdf;      // photon flux x Lambert BRDF (albedo / pi): lm / sr per channel
-    float pad;
+    glm::vec3 flux;              // photon flux, lm per channel
+    uint32_t metallicRoughness;  // unorm16 x 2: metallic (low half), roughness (high half)
+    glm::vec3 incoming;          // unit, from the hit back along the photon's last segment (wi)
+    float transmission;
+    glm::vec3 baseColor;         // linear; a specular material's diffuse layer stores dielectricF0 = 0
+    float dielectricF0;
 };
-static_assert(sizeof(CausticHit) == 48);
+static_assert(sizeof(CausticHit) == 80);
 
 // One backward (second-type) integration sphere per camera pixel (std430, 48 bytes).
 struct CausticSphere {

@@ -1,5 +1,5 @@
 // Any-hit of the gather (mirror of shaders/vulkan/backward_trace/gather_body.glsl): density estimate
-// L = transmittance x sum(flux f_r) / (pi r^2) for the sphere's pixel, only for hits on the same
+// L = transmittance x sum(flux f_r(wi, wo)) / (pi r^2) for the sphere's pixel, only for hits on the same
 // object and side; the hit is ignored so traversal visits every containing sphere.
 #include "common/lang.h"
 #include "forward_trace/caustic_hit.hlsli"
@@ -16,7 +16,8 @@ void main(inout GatherPayload payload, in SphereAttributes attribs) {
     CausticSphere s = loadCausticSphere(spheres, InstanceIndex());
     CausticHit h = loadCausticHit(hits, payload.hitIndex);
     if (h.objectId == s.objectId && dot(h.normal, s.normal) > 0.0f) {
-        addRadiance(s.pixel, h.fluxBsdf * s.transmittance / (kPi * s.radius * s.radius));
+        // The sphere stores no outgoing direction yet: the BRDF is read towards the normal.
+        addRadiance(s.pixel, causticHitReflectedFlux(h, s.normal) * s.transmittance / (kPi * s.radius * s.radius));
         stats.InterlockedAdd(4u * kStatGatherHits, 1u);
     }
     IgnoreHit();

@@ -1,9 +1,10 @@
 // Deferred direct lighting (paper 3.1; mirror of shaders/vulkan/direct_lighting/direct.rgen): one
-// thread per pixel, every light with a ray-traced shadow; specular pixels follow their most probable
-// specular lobe to the first diffuse surface.
+// thread per pixel, every light with a ray-traced shadow; specular pixels follow their reflected and
+// refracted lobes (split for the first events) to the first diffuse surfaces.
 #include "scene/scene.hlsli"
 #include "scene/camera.hlsli"
 #include "direct_lighting/shading.hlsli"
+#include "common/view_lobes.h"
 
 struct CameraBlock { CameraConstants camera; };
 ConstantBuffer<CameraBlock> cameraBlock : register(b0, space1);
@@ -13,59 +14,82 @@ Texture2D<float4> gLinearDepth : register(t2, space2);
 Texture2D<uint> gObjectId : register(t3, space2);
 RWTexture2D<float4> outRadiance : register(u4, space2);
 
-static const uint kMaxSpecularChain = 6u;
+// Both lobes for the first kSplitEvents events, then the stronger one (see the GLSL twin).
+static const uint kMaxSpecularChain = 8u;
+static const uint kSplitEvents = 3u;
+static const float kMinBranchWeight = 1.0e-3f;
 
 float3 shadeMaterial(float3 p, float3 n, float3 v, float3 albedo, GpuMaterial m) {
-    return shadeDirect(p, n, v, albedo, m.metallic, m.roughness, m.transmission, m.specular, m.ior);
+    return shadeDirect(p, n, v, makeBrdfMaterial(albedo, m.metallic, m.roughness, m.transmission,
+                                                 gltfDielectricF0(m.specular, m.ior)));
+}
+
+struct ChainBranch { float3 origin; float3 direction; float3 weight; uint events; };
+
+ChainBranch makeBranch(float3 p, float3 n, float3 direction, float3 weight, uint events) {
+    float eps = 1.0e-4f * (1.0f + max(max(abs(p.x), abs(p.y)), abs(p.z)));
+    ChainBranch b;
+    b.origin = p + (dot(direction, n) > 0.0f ? n : -n) * eps;
+    b.direction = direction;
+    b.weight = weight;
+    b.events = events;
+    return b;
 }
 
 float3 traceSpecularChain(float3 p, float3 n, float3 d, GpuMaterial m, float3 albedo, bool entering) {
+    ChainBranch stack[kSplitEvents + 1u];
+    uint top = 0u;
+    float3 radiance = (float3)0.0f;
     float3 weight = (float3)1.0f;
-    for (uint event = 0u; event < kMaxSpecularChain; ++event) {
-        float cosI = max(dot(-d, n), 0.0f);
-        float3 next;
-        if (m.metallic > 0.5f) {
-            weight *= fresnelSchlick(albedo, cosI);
-            next = reflect(d, n);
-        } else {
-            bool thin = (m.flags & kMaterialThinWalled) != 0u;
-            float eta = thin ? 1.0f : (entering ? m.ior : 1.0f / m.ior);
-            float fr = fresnelDielectric(cosI, eta);
-            float t = m.transmission * (1.0f - fr);
-            float3 refracted;
-            if (t >= fr && refractDirection(d, n, 1.0f / eta, refracted)) {
-                weight *= t * albedo;
-                next = thin ? d : refracted;
-                n = -n;
-            } else {
-                weight *= max(fr, 1.0e-3f);
-                next = reflect(d, n);
+    uint events = 0u;
+    for (uint guard = 0u; guard < (kMaxSpecularChain << kSplitEvents); ++guard) {
+        bool thin = (m.flags & kMaterialThinWalled) != 0u;
+        ViewLobes l = specularViewLobes(d, n, albedo, m.metallic, m.transmission, m.ior, thin, entering);
+        float3 wr = weight * l.reflectWeight, wt = weight * l.refractWeight;
+        ++events;
+        bool split = events <= kSplitEvents && maxComponent(wr) >= kMinBranchWeight && maxComponent(wt) >= kMinBranchWeight;
+        if (split) stack[top++] = makeBranch(p, n, l.reflectDirection, wr, events);
+        bool refract = split || maxComponent(wt) > maxComponent(wr);
+        ChainBranch b = refract ? makeBranch(p, n, l.refractDirection, wt, events) : makeBranch(p, n, l.reflectDirection, wr, events);
+        for (;;) {
+            SurfaceHit h = (SurfaceHit)0;
+            bool hit = false;
+            if (maxComponent(b.weight) >= kMinBranchWeight && b.events <= kMaxSpecularChain) {
+                RayDesc ray;
+                ray.Origin = b.origin;
+                ray.TMin = 0.0f;
+                ray.Direction = b.direction;
+                ray.TMax = 1.0e6f;
+                SurfacePayload surface;
+                surface.instance = ~0u;
+                surface.primitive = 0u;
+                surface.barycentrics = (float2)0.0f;
+                TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 1, 0, ray, surface);
+                hit = surface.instance != ~0u;
+                if (hit) h = sceneSurfaceHit(surface.instance, surface.primitive, surface.barycentrics);
             }
+            if (hit) {
+                float3 ns = h.shadingNormal;
+                if (dot(ns, b.direction) > 0.0f) ns = -ns;
+                if (!sceneMaterialIsSpecular(h.material)) {
+                    radiance += b.weight * shadeMaterial(h.position, ns, -b.direction, h.baseColor, h.material);
+                } else {
+                    p = h.position;
+                    n = ns;
+                    d = b.direction;
+                    m = h.material;
+                    albedo = h.baseColor;
+                    entering = dot(d, h.geometricNormal) < 0.0f;
+                    weight = b.weight;
+                    events = b.events;
+                    break;
+                }
+            }
+            if (top == 0u) return radiance;
+            b = stack[--top];
         }
-        d = normalize(next);
-        float eps = 1.0e-4f * (1.0f + max(max(abs(p.x), abs(p.y)), abs(p.z)));
-        RayDesc ray;
-        ray.Origin = p + n * eps;
-        ray.TMin = 0.0f;
-        ray.Direction = d;
-        ray.TMax = 1.0e6f;
-        SurfacePayload surface;
-        surface.instance = ~0u;
-        surface.primitive = 0u;
-        surface.barycentrics = (float2)0.0f;
-        TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 1, 0, ray, surface);
-        if (surface.instance == ~0u) return (float3)0.0f;
-        SurfaceHit h = sceneSurfaceHit(surface.instance, surface.primitive, surface.barycentrics);
-        entering = dot(d, h.geometricNormal) < 0.0f;
-        float3 ns = h.shadingNormal;
-        if (dot(ns, d) > 0.0f) ns = -ns;
-        p = h.position;
-        n = ns;
-        m = h.material;
-        albedo = h.baseColor;
-        if (!sceneMaterialIsSpecular(m)) return weight * shadeMaterial(p, n, -d, albedo, m);
     }
-    return (float3)0.0f;
+    return radiance;
 }
 
 [shader("raygeneration")]
@@ -84,7 +108,8 @@ void main() {
     float3 n = normalize(nr.xyz);
     float3 v = normalize(camera.eye.xyz - p);
     GpuMaterial m = sceneMaterial(sceneInstance(objectId - 1u).material);
-    float3 radiance = shadeDirect(p, n, v, am.rgb, am.a, nr.w, m.transmission, m.specular, m.ior);
+    float3 radiance = shadeDirect(p, n, v, makeBrdfMaterial(am.rgb, am.a, nr.w, m.transmission,
+                                                                gltfDielectricF0(m.specular, m.ior)));
     if (sceneMaterialIsSpecular(m)) radiance += traceSpecularChain(p, n, -v, m, am.rgb, true);
     outRadiance[pixel] = float4(radiance, 1.0f);
 }

@@ -3,7 +3,7 @@
 // Direct illumination with ray-traced shadows (mirror of shaders/vulkan/direct_lighting/shading.glsl).
 // Needs scene.hlsli; miss shader 1 is the shadow miss.
 #include "common/emission.h"
-#include "common/microfacet.h"
+#include "common/bsdf.h"
 #include "direct_lighting/payloads.hlsli"
 
 struct LightSample { float3 toLight; float distance; float3 irradiance; };
@@ -45,27 +45,17 @@ float shadowVisibility(float3 p, float3 n, float3 toLight, float distance) {
     return float(shadow.unoccluded);
 }
 
-float3 shadeDirect(float3 p, float3 n, float3 v, float3 albedo, float metallic, float roughness, float transmission,
-                   float specular, float ior) {
-    float3 diffuse = albedo * ((1.0f - metallic) * (1.0f - transmission) * kInvPi);
-    float3 f0 = lerp((float3)(specular * dielectricF0(ior)), albedo, metallic);
-    float alpha = ggxAlpha(max(roughness, 0.05f));
-    float nv = dot(n, v);
+// Sum of f_r(l, v) E_l cos(theta_l) V_l with the one glTF BRDF of shaders/common/bsdf.h.
+float3 shadeDirect(float3 p, float3 n, float3 v, BrdfMaterial brdf) {
     float3 result = (float3)0.0f;
     uint count = sceneLightCount();
     for (uint i = 0u; i < count; ++i) {
         LightSample s = sampleLight(sceneLight(i), p);
         float nl = dot(n, s.toLight);
-        if (nl <= 0.0f || nv <= 0.0f || max(s.irradiance.r, max(s.irradiance.g, s.irradiance.b)) <= 0.0f) continue;
-        float3 f = diffuse;
-        if (max(f0.r, max(f0.g, f0.b)) > 0.0f) {
-            float3 h = normalize(s.toLight + v);
-            float nh = dot(n, h), vh = dot(v, h);
-            float g = ggxSmithG1(nv, vh, alpha) * ggxSmithG1(nl, dot(s.toLight, h), alpha);
-            f += fresnelSchlick(f0, vh) * (ggxD(nh, alpha) * g / (4.0f * nl * nv));
-        }
-        float vis = shadowVisibility(p, n, s.toLight, s.distance);
-        result += f * s.irradiance * (nl * vis);
+        if (nl <= 0.0f || max(s.irradiance.r, max(s.irradiance.g, s.irradiance.b)) <= 0.0f) continue;
+        float3 f = evalGltfBrdf(brdf, n, s.toLight, v);
+        if (max(f.r, max(f.g, f.b)) <= 0.0f) continue;
+        result += f * s.irradiance * (nl * shadowVisibility(p, n, s.toLight, s.distance));
     }
     return result;
 }

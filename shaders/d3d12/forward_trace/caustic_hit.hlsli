@@ -1,8 +1,23 @@
 #ifndef CAUSTICS_D3D12_CAUSTIC_HIT_HLSLI
 #define CAUSTICS_D3D12_CAUSTIC_HIT_HLSLI
-// std430 CausticHit / CausticSphere (48 bytes each) and the statistics slots (mirror of
+// std430 CausticHit (80 bytes) / CausticSphere (48 bytes) and the statistics slots (mirror of
 // shaders/vulkan/forward_trace/caustic_hit.glsl), read/written through byte-address buffers.
-struct CausticHit { float3 position; uint objectId; float3 normal; uint light; float3 fluxBsdf; };
+#include "common/bsdf.h"
+struct CausticHit {
+    float3 position;  uint objectId;
+    float3 normal;    uint light;              // normal: unit, on the side the photon arrived from
+    float3 flux;      uint metallicRoughness;  // flux: lm; unorm16 x 2 (metallic low, roughness high)
+    float3 incoming;  float transmission;      // incoming: unit, back along the photon's last segment
+    float3 baseColor; float dielectricF0;
+};
+static const uint kCausticHitBytes = 80u;
+
+// GLSL packUnorm2x16 / unpackUnorm2x16.
+uint packUnorm2x16(float2 v) {
+    uint2 q = uint2(round(saturate(v) * 65535.0f));
+    return q.x | (q.y << 16);
+}
+float2 unpackUnorm2x16(uint p) { return float2(p & 0xFFFFu, p >> 16) / 65535.0f; }
 struct CausticSphere { float3 centre; float radius; float3 transmittance; uint objectId; float3 normal; uint pixel; };
 
 static const uint kStatStoredHitAttempts = 0u;
@@ -19,13 +34,36 @@ struct TracePayload {   // t < 0 = miss
 };
 
 CausticHit loadCausticHit(ByteAddressBuffer b, uint i) {
-    uint o = 48u * i;
-    uint4 a = b.Load4(o), n = b.Load4(o + 16u), f = b.Load4(o + 32u);
+    uint o = kCausticHitBytes * i;
+    uint4 a = b.Load4(o), n = b.Load4(o + 16u), f = b.Load4(o + 32u), w = b.Load4(o + 48u), c = b.Load4(o + 64u);
     CausticHit h;
     h.position = asfloat(a.xyz); h.objectId = a.w;
     h.normal = asfloat(n.xyz); h.light = n.w;
-    h.fluxBsdf = asfloat(f.xyz);
+    h.flux = asfloat(f.xyz); h.metallicRoughness = f.w;
+    h.incoming = asfloat(w.xyz); h.transmission = asfloat(w.w);
+    h.baseColor = asfloat(c.xyz); h.dielectricF0 = asfloat(c.w);
     return h;
+}
+
+void storeCausticHit(RWByteAddressBuffer b, uint i, float3 position, uint objectId, float3 normal, uint light,
+                     float3 flux, float3 incoming, BrdfMaterial m) {
+    uint o = kCausticHitBytes * i;
+    b.Store4(o, uint4(asuint(position), objectId));
+    b.Store4(o + 16u, uint4(asuint(normal), light));
+    b.Store4(o + 32u, uint4(asuint(flux), packUnorm2x16(float2(m.metallic, m.roughness))));
+    b.Store4(o + 48u, uint4(asuint(incoming), asuint(m.transmission)));
+    b.Store4(o + 64u, uint4(asuint(m.baseColor), asuint(m.dielectricF0)));
+}
+
+// The receiver's BRDF parameters (shaders/common/bsdf.h) as the forward trace stored them.
+BrdfMaterial causticHitBrdf(CausticHit h) {
+    float2 mr = unpackUnorm2x16(h.metallicRoughness);
+    return makeBrdfMaterial(h.baseColor, mr.x, mr.y, h.transmission, h.dielectricF0);
+}
+
+// Reflected flux x f_r(wi, wo) towards wo (lm / sr per channel).
+float3 causticHitReflectedFlux(CausticHit h, float3 wo) {
+    return h.flux * evalGltfBrdf(causticHitBrdf(h), h.normal, h.incoming, wo);
 }
 
 CausticSphere loadCausticSphere(ByteAddressBuffer b, uint i) {

@@ -43,7 +43,16 @@ bool texelIsSpecular(int2 t, int layer) {
     return sceneMaterialIsSpecular(sceneMaterial(sceneInstance(id - 1u).material));
 }
 
-void splatFirstType(CameraConstants camera, float3 x, float3 nFacing, uint objectId, float3 fluxBsdf) {
+// The receiver's BRDF (shaders/common/bsdf.h). A specular material reaches here only through its
+// diffuse layer, whose Fresnel/metallic/transmission weights the sampled event already applied.
+BrdfMaterial receiverBrdfMaterial(SurfaceHit h) {
+    GpuMaterial m = h.material;
+    if (sceneMaterialIsSpecular(m)) return lambertOnlyBrdfMaterial(h.baseColor);
+    return makeBrdfMaterial(h.baseColor, m.metallic, m.roughness, m.transmission, gltfDielectricF0(m.specular, m.ior));
+}
+
+void splatFirstType(CameraConstants camera, float3 x, float3 nFacing, uint objectId, float3 flux, float3 incoming,
+                    BrdfMaterial brdf) {
     PinholeCamera cam = cameraPinhole(camera);
     CameraProjection pr = projectToCamera(cam, x);
     if (!pr.valid || pr.depth < camera.clip.x) return;
@@ -57,7 +66,8 @@ void splatFirstType(CameraConstants camera, float3 x, float3 nFacing, uint objec
     float tanView = min(sqrt(max(0.0f, 1.0f - cosSurface * cosSurface)) / cosSurface, 20.0f);
     if (abs(pr.depth - gDepth) > gDepth * (1e-3f + 1.5f * footprint * tanView)) return;
     float factor = pinholeSplatFactor(cam, pr.cosTheta, cosSurface, pr.distance);
-    addRadiance(uint(px.y) * camera.frame.x + uint(px.x), fluxBsdf * factor);
+    float3 reflected = flux * evalGltfBrdf(brdf, nFacing, incoming, toEye);
+    addRadiance(uint(px.y) * camera.frame.x + uint(px.x), reflected * factor);
     statAdd(kStatSplats, 1u);
 }
 
@@ -142,16 +152,11 @@ void main() {
         }
         if (events == 0u) break;
         float3 nFacing = dot(h.shadingNormal, dir) < 0.0f ? h.shadingNormal : -h.shadingNormal;
-        float3 fluxBsdf = flux * h.baseColor * kInvPi;
+        BrdfMaterial brdf = receiverBrdfMaterial(h);
         uint slot;
         statAdd(kStatStoredHitAttempts, 1u, slot);
-        if (slot < pc.maxStoredHits) {
-            uint o = 48u * slot;
-            hits.Store4(o, uint4(asuint(x), h.objectId));
-            hits.Store4(o + 16u, uint4(asuint(nFacing), m.light));
-            hits.Store4(o + 32u, uint4(asuint(fluxBsdf), 0u));
-        }
-        splatFirstType(camera, x, nFacing, h.objectId, fluxBsdf);
+        if (slot < pc.maxStoredHits) storeCausticHit(hits, slot, x, h.objectId, nFacing, m.light, flux, -dir, brdf);
+        splatFirstType(camera, x, nFacing, h.objectId, flux, -dir, brdf);
         break;
     }
 }

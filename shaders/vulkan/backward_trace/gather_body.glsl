@@ -1,4 +1,4 @@
-// Any-hit of the gather: density estimate L = transmittance x sum(flux f_r) / (pi r^2) for the
+// Any-hit of the gather: density estimate L = transmittance x sum(flux f_r(wi, wo)) / (pi r^2) for the
 // sphere's pixel, only for hits on the same object and the same side of the surface. The hit is
 // ignored so traversal visits every containing sphere (geometry is NO_DUPLICATE_ANY_HIT).
 #extension GL_EXT_ray_tracing : require
@@ -15,7 +15,8 @@ void main() {
     CausticSphere s = spheres[gl_InstanceID];
     CausticHit h = hits[hitIndex];
     if (h.objectId == s.objectId && dot(h.normal, s.normal) > 0.0) {
-        addRadiance(s.pixel, h.fluxBsdf * s.transmittance / (kPi * s.radius * s.radius));
+        // The sphere stores no outgoing direction yet: the BRDF is read towards the normal.
+        addRadiance(s.pixel, causticHitReflectedFlux(h, s.normal) * s.transmittance / (kPi * s.radius * s.radius));
         atomicAdd(stats[kStatGatherHits], 1u);
     }
     ignoreIntersectionEXT;

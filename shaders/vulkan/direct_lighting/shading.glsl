@@ -3,7 +3,7 @@
 // Direct illumination from KHR_lights_punctual lights with ray-traced shadows. Needs scene.glsl and
 // a `rayPayloadEXT uint shadowUnoccluded` at location 1, miss shader index 1 = shadow miss.
 #include "common/emission.h"
-#include "common/microfacet.h"
+#include "common/bsdf.h"
 
 // Light arriving at p: direction towards the light, distance, and the irradiance on a surface
 // facing the light (lux). KHR_lights_punctual: point/spot E = I / d^2 (candela -> lux) with the
@@ -47,30 +47,18 @@ float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distance) {
     return float(shadowUnoccluded);
 }
 
-// Outgoing radiance towards v of a surface point lit by every scene light.
-// BRDF: (1 - metallic)(1 - transmission) albedo / pi (Lambert) + GGX specular with Schlick Fresnel,
-// F0 = mix(specular * F0(ior), albedo, metallic) (glTF 2.0 Appendix B). Roughness is clamped to 0.05
-// so that point lights leave a visible highlight on polished surfaces (a delta lobe would not).
-vec3 shadeDirect(vec3 p, vec3 n, vec3 v, vec3 albedo, float metallic, float roughness, float transmission,
-                 float specular, float ior) {
-    vec3 diffuse = albedo * ((1.0 - metallic) * (1.0 - transmission) * kInvPi);
-    vec3 f0 = mix(vec3(specular * dielectricF0(ior)), albedo, metallic);
-    float alpha = ggxAlpha(max(roughness, 0.05));
-    float nv = dot(n, v);
+// Outgoing radiance towards v of a surface point lit by every scene light: sum of
+// f_r(l, v) E_l cos(theta_l) V_l with the one glTF BRDF of shaders/common/bsdf.h (docs/physics.md,
+// "One BSDF"), the same one the caustic splat and gather evaluate.
+vec3 shadeDirect(vec3 p, vec3 n, vec3 v, BrdfMaterial brdf) {
     vec3 result = vec3(0.0);
     for (uint i = 0u; i < sceneLightCount; ++i) {
         LightSample s = sampleLight(sceneLights[i], p);
         float nl = dot(n, s.toLight);
-        if (nl <= 0.0 || nv <= 0.0 || max(s.irradiance.r, max(s.irradiance.g, s.irradiance.b)) <= 0.0) continue;
-        vec3 f = diffuse;
-        if (max(f0.r, max(f0.g, f0.b)) > 0.0) {
-            vec3 h = normalize(s.toLight + v);
-            float nh = dot(n, h), vh = dot(v, h);
-            float g = ggxSmithG1(nv, vh, alpha) * ggxSmithG1(nl, dot(s.toLight, h), alpha);
-            f += fresnelSchlick(f0, vh) * (ggxD(nh, alpha) * g / (4.0 * nl * nv));
-        }
-        float vis = shadowVisibility(p, n, s.toLight, s.distance);
-        result += f * s.irradiance * (nl * vis);
+        if (nl <= 0.0 || max(s.irradiance.r, max(s.irradiance.g, s.irradiance.b)) <= 0.0) continue;
+        vec3 f = evalGltfBrdf(brdf, n, s.toLight, v);
+        if (max(f.r, max(f.g, f.b)) <= 0.0) continue;
+        result += f * s.irradiance * (nl * shadowVisibility(p, n, s.toLight, s.distance));
     }
     return result;
 }

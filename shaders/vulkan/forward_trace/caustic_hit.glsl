@@ -2,11 +2,41 @@
 #define CAUSTICS_CAUSTIC_HIT_GLSL
 // std430 mirrors of caustics::CausticHit / CausticSphere (passes/include/caustics/caustic_passes.h)
 // and the statistics slots.
+#include "common/bsdf.h"
 struct CausticHit {
-    vec3 position; uint objectId;
-    vec3 normal;   uint light;       // normal: unit, on the side the photon arrived from
-    vec3 fluxBsdf; float pad;        // flux x Lambert BRDF
+    vec3 position;  uint objectId;
+    vec3 normal;    uint light;              // normal: unit, on the side the photon arrived from
+    vec3 flux;      uint metallicRoughness;  // flux: lm; unorm16 x 2 (metallic low, roughness high)
+    vec3 incoming;  float transmission;      // incoming: unit, back along the photon's last segment
+    vec3 baseColor; float dielectricF0;
 };
+
+CausticHit makeCausticHit(vec3 position, uint objectId, vec3 normal, uint light, vec3 flux, vec3 incoming,
+                          BrdfMaterial m) {
+    CausticHit h;
+    h.position = position;
+    h.objectId = objectId;
+    h.normal = normal;
+    h.light = light;
+    h.flux = flux;
+    h.metallicRoughness = packUnorm2x16(vec2(m.metallic, m.roughness));
+    h.incoming = incoming;
+    h.transmission = m.transmission;
+    h.baseColor = m.baseColor;
+    h.dielectricF0 = m.dielectricF0;
+    return h;
+}
+
+// The receiver's BRDF parameters (shaders/common/bsdf.h) as the forward trace stored them.
+BrdfMaterial causticHitBrdf(CausticHit h) {
+    vec2 mr = unpackUnorm2x16(h.metallicRoughness);
+    return makeBrdfMaterial(h.baseColor, mr.x, mr.y, h.transmission, h.dielectricF0);
+}
+
+// Reflected radiance-weighted flux flux x f_r(wi, wo) towards wo (lm / sr per channel).
+vec3 causticHitReflectedFlux(CausticHit h, vec3 wo) {
+    return h.flux * evalGltfBrdf(causticHitBrdf(h), h.normal, h.incoming, wo);
+}
 struct CausticSphere {
     vec3 centre;        float radius;   // radius 0: no sphere
     vec3 transmittance; uint objectId;

@@ -41,9 +41,19 @@ bool texelIsSpecular(ivec2 t, int layer) {
     return sceneMaterialIsSpecular(sceneMaterials[sceneInstances[id - 1u].material]);
 }
 
+// The receiver's BRDF (shaders/common/bsdf.h). A specular material reaches here only through its
+// diffuse layer, whose Fresnel/metallic/transmission weights the sampled event already applied.
+BrdfMaterial receiverBrdfMaterial(SurfaceHit h) {
+    GpuMaterial m = h.material;
+    if (sceneMaterialIsSpecular(m)) return lambertOnlyBrdfMaterial(h.baseColor);
+    return makeBrdfMaterial(h.baseColor, m.metallic, m.roughness, m.transmission, gltfDielectricF0(m.specular, m.ior));
+}
+
 // Light-tracing estimator (shaders/common/camera.h) with the camera G-buffer as the visibility test
 // (paper Figure 4b): same object and a depth within the pixel's footprint on the surface.
-void splatFirstType(vec3 x, vec3 nFacing, uint objectId, vec3 fluxBsdf) {
+void splatFirstType(CausticHit hit) {
+    vec3 x = hit.position;
+    vec3 nFacing = hit.normal;
     PinholeCamera cam = cameraPinhole(camera);
     CameraProjection pr = projectToCamera(cam, x);
     if (!pr.valid || pr.depth < camera.clip.x) return;
@@ -51,14 +61,14 @@ void splatFirstType(vec3 x, vec3 nFacing, uint objectId, vec3 fluxBsdf) {
     float cosSurface = dot(nFacing, toEye);
     if (cosSurface <= 0.0) return;
     ivec2 px = ivec2(pr.pixel);
-    if (texelFetch(gObjectId, px, 0).r != objectId) return;
+    if (texelFetch(gObjectId, px, 0).r != hit.objectId) return;
     float gDepth = texelFetch(gLinearDepth, px, 0).r;
     // Depth varies across one pixel by (pixel footprint) x tan(view angle); allow that plus 0.1 %.
     float footprint = 2.0 * cam.tanHalfFovY / cam.height;
     float tanView = min(sqrt(max(0.0, 1.0 - cosSurface * cosSurface)) / cosSurface, 20.0);
     if (abs(pr.depth - gDepth) > gDepth * (1e-3 + 1.5 * footprint * tanView)) return;
     float factor = pinholeSplatFactor(cam, pr.cosTheta, cosSurface, pr.distance);
-    addRadiance(uint(px.y) * camera.frame.x + uint(px.x), fluxBsdf * factor);
+    addRadiance(uint(px.y) * camera.frame.x + uint(px.x), causticHitReflectedFlux(hit, toEye) * factor);
     atomicAdd(stats[kStatSplats], 1u);
 }
 
@@ -136,17 +146,10 @@ void main() {
         }
         if (events == 0u) break;   // direct light, not a caustic
         vec3 nFacing = dot(h.shadingNormal, dir) < 0.0 ? h.shadingNormal : -h.shadingNormal;
-        vec3 fluxBsdf = flux * h.baseColor * kInvPi;
+        CausticHit hit = makeCausticHit(x, h.objectId, nFacing, m.light, flux, -dir, receiverBrdfMaterial(h));
         uint slot = atomicAdd(stats[kStatStoredHitAttempts], 1u);
-        if (slot < pc.maxStoredHits) {
-            hits[slot].position = x;
-            hits[slot].objectId = h.objectId;
-            hits[slot].normal = nFacing;
-            hits[slot].light = m.light;
-            hits[slot].fluxBsdf = fluxBsdf;
-            hits[slot].pad = 0.0;
-        }
-        splatFirstType(x, nFacing, h.objectId, fluxBsdf);
+        if (slot < pc.maxStoredHits) hits[slot] = hit;
+        splatFirstType(hit);
         break;
     }
 }

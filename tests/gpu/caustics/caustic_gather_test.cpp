@@ -4,12 +4,22 @@
 
 #include <cmath>
 
+#include <glm/gtc/packing.hpp>
+
 #include "caustic_harness.h"
 #include "caustic_test_scene.h"
+#include "common/bsdf.h"
 #include "gpu_test.h"
 
 namespace caustics::test {
 namespace {
+
+// flux x f_r of a stored hit towards wo, from the hit's fields (forward_trace/caustic_hit.glsl).
+glm::vec3 reflectedFlux(const CausticHit& h, const glm::vec3& wo) {
+    glm::vec2 mr = glm::unpackUnorm2x16(h.metallicRoughness);
+    auto brdf = shader::makeBrdfMaterial(h.baseColor, mr.x, mr.y, h.transmission, h.dielectricF0);
+    return h.flux * shader::evalGltfBrdf(brdf, h.normal, h.incoming, wo);
+}
 
 class CausticGather : public GpuTest {};
 
@@ -31,7 +41,7 @@ TEST_F(CausticGather, SecondTypeEqualsCpuBruteForceGatherOnTheSameHitsAndSpheres
             // either way, and are rare enough (measure zero) not to matter at this tolerance.
             if (!(glm::dot(d, d) < s.radius * s.radius)) continue;
             if (h.objectId != s.objectId || glm::dot(h.normal, s.normal) <= 0.0f) continue;
-            expected[s.pixel] += glm::dvec3(h.fluxBsdf * s.transmittance) / (3.14159265358979 * s.radius * s.radius);
+            expected[s.pixel] += glm::dvec3(reflectedFlux(h, s.normal) * s.transmittance) / (3.14159265358979 * s.radius * s.radius);
             ++pairs;
         }
     }
@@ -63,7 +73,8 @@ TEST_F(CausticGather, HitBufferOverflowIsCountedAndReportedNotACrash) {
     ASSERT_EQ(r.hits.size(), 32u);
     for (const CausticHit& h : r.hits) {
         EXPECT_NE(h.objectId, 0u);
-        EXPECT_TRUE(std::isfinite(h.fluxBsdf.x) && h.fluxBsdf.x >= 0.0f);
+        EXPECT_TRUE(std::isfinite(h.flux.x) && h.flux.x >= 0.0f);
+        EXPECT_NEAR(glm::length(h.incoming), 1.0f, 1e-4f);
     }
     for (const glm::vec3& v : r.secondType) ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
 }

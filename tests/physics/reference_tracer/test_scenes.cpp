@@ -11,6 +11,8 @@ scene::Material diffuseMaterial(float albedo) {
     m.name = "diffuse";
     m.baseColor = glm::vec3(albedo);
     m.roughness = 1.0f;
+    // Lambertian: no specular layer in the shared BRDF (shaders/common/bsdf.h), so rho E / pi is exact.
+    m.specular = 0.0f;
     return m;
 }
 
