@@ -80,7 +80,7 @@ const char* aovName(Aov aov) {
 }
 
 const char* cliUsage() {
-    return "usage: caustics-sponza [options]\n"
+    static const std::string usage = std::string("usage: caustics-sponza [options]\n"
            "  --scene PATH|builtin|builtin:atrium   scene to render (glTF .gltf/.glb or a built-in one)\n"
            "  --sponza PATH           modified Sponza: load PATH and add the caustic objects to its atrium\n"
            "  --backend vulkan|d3d12  RHI backend (default vulkan)\n"
@@ -97,10 +97,12 @@ const char* cliUsage() {
            "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
            "  --no-second-type        skip caustics seen through glass (the backward sphere pass)\n"
            "  --exposure X            linear exposure before tone mapping (default 1)\n"
+           ) + sampleControlsUsage() + std::string(
            "  --reference             also render the CPU reference light tracer (to FILE.reference.exr)\n"
            "  --reference-photons N   photons per light for --reference\n"
            "  --validation            enable Vulkan validation layers\n"
-           "  --window                interactive window (GLFW)\n";
+           "  --window                interactive window (GLFW)\n");
+    return usage.c_str();
 }
 
 Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
@@ -145,9 +147,13 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
             if (o.raysPerTexel <= 0.0f) return makeError("--rays-per-texel: must be greater than 0 (got " + value + ")");
         } else if (a == "--exposure") { CAUSTICS_TRY(o.exposure, parseFloat(a, value, 1e-6f, 1e6f)); }
         else if (a == "--reference-photons") { CAUSTICS_TRY(o.referencePhotons, parseUint(a, value, 1, 1'000'000'000u)); }
-        else return makeError("unknown option '" + a + "' (see --help)");
+        else {
+            CAUSTICS_TRY(bool known, parseSampleControl(a, value, o.controls));
+            if (!known) return makeError("unknown option '" + a + "' (see --help)");
+        }
 #undef CLI_VALUE
     }
+    CAUSTICS_CHECK(validateSampleControls(o.controls, o.window, o.framesGiven));
     if (!o.outPath.empty()) {
         auto dot = o.outPath.rfind('.');
         std::string ext = dot == std::string::npos ? "" : o.outPath.substr(dot);

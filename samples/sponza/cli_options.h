@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "caustics/rhi/result.h"
+#include "sample_controls.h"
 
 namespace caustics::sample {
 
@@ -42,6 +43,7 @@ struct CliOptions {
     bool filter = true;
     bool secondType = true;
     float exposure = 1.0f;
+    SampleControls controls;              // --seed, --accumulate, --sphere-* (sample_controls.h)
     bool validation = false;
     bool help = false;
 };

@@ -16,6 +16,7 @@
 #include "caustics/rhi/rhi.h"
 #include "caustics/scene/gpu_scene.h"
 #include "scene_source.h"
+#include "still_render.h"
 #include "window_app.h"
 
 using namespace caustics;
@@ -46,6 +47,13 @@ CausticsSettings settingsFromOptions(const sample::CliOptions& o) {
     s.secondType = o.secondType;
     s.exposure = o.exposure;
     s.aov = toCausticsAov(o.aov);
+    s.seed = o.controls.seed;
+    s.sphereRadiusScale = o.controls.sphereRadiusScale;
+    s.sphereWorldRadius = o.controls.sphereWorldRadius;
+    s.sphereRadiusPolicy = o.controls.sphereRadiusPolicy == sample::SphereRadiusChoice::World
+                               ? SphereRadiusPolicy::FixedWorld
+                               : SphereRadiusPolicy::PixelFootprint;
+    if (o.controls.accumulate > 0) s.filter = false;  // --accumulate averages the unfiltered estimate
     return s;
 }
 
@@ -131,14 +139,13 @@ int run(const sample::CliOptions& o) {
         return 1;
     }
     scene::Camera camera = sample::cameraFromOptions(scene, o);
-    (*renderer)->graph().setTimingWindow(std::max(1u, o.frames));
-    for (uint32_t f = 0; f < o.frames; ++f) {
-        Status st = (*renderer)->render(camera, f, f + 1 == o.frames);
-        if (!st) {
-            std::fprintf(stderr, "caustics-sponza: frame %u: %s\n", f, st.message().c_str());
-            return 1;
-        }
+    auto still = sample::renderStill(**renderer, camera, o);
+    if (!still) {
+        std::fprintf(stderr, "caustics-sponza: %s\n", still.message().c_str());
+        return 1;
     }
+    if (o.controls.accumulate > 0)
+        std::printf("accumulated %u unfiltered frames (seed %u)\n", o.controls.accumulate, o.controls.seed);
     printTimings((*renderer)->graph());
     if (!o.graphDotPath.empty()) {
         std::ofstream dot(o.graphDotPath);
@@ -149,7 +156,7 @@ int run(const sample::CliOptions& o) {
         std::error_code ec;
         if (auto parent = std::filesystem::path(o.outPath).parent_path(); !parent.empty())
             std::filesystem::create_directories(parent, ec);
-        const sample::FrameImages& img = (*renderer)->images();
+        const sample::FrameImages& img = *still;
         Status st = okStatus();
         if (o.outPath.size() > 4 && o.outPath.substr(o.outPath.size() - 4) == ".exr") {
             sample::FloatImage f{img.width, img.height, 4, img.hdr};

@@ -14,12 +14,7 @@ static const uint kAovFinal = 0u, kAovDirect = 1u, kAovCaustics = 2u, kAovAlbedo
 struct Params { uint aov; uint hasCaustics; float exposure; float depthRange; uint2 size; };
 ConstantBuffer<Params> params : register(b0, space999);
 
-float3 acesFitted(float3 x) { return saturate((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f)); }
-
-float3 srgbEncode(float3 c) {
-    c = saturate(c);
-    return lerp(12.92f * c, 1.055f * pow(c, (float3)(1.0f / 2.4f)) - 0.055f, step((float3)0.0031308f, c));
-}
+#include "common/tone_map.h"
 
 [numthreads(8, 8, 1)]
 void main(uint3 id : SV_DispatchThreadID) {

@@ -1,9 +1,11 @@
 #version 460
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_GOOGLE_include_directive : require
 // Composite and tone map (DESIGN.md pass 7): final = direct + caustic radiance (linear), times the
 // exposure, tone-mapped with the ACES filmic fit of Narkowicz 2015 ("ACES Filmic Tone Mapping Curve":
 // x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14)), then sRGB-encoded (IEC 61966-2-1) into RGBA8.
 // The selected AOV also goes, linear and un-tone-mapped, to an RGBA32F target (EXR output).
+#include "common/tone_map.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform texture2D direct;
@@ -24,15 +26,6 @@ layout(push_constant) uniform Params {
     float depthRange;   // Depth AOV: metres mapped to white
     uvec2 size;
 } params;
-
-vec3 acesFitted(vec3 x) {
-    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-
-vec3 srgbEncode(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);

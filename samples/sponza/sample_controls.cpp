@@ -1,0 +1,75 @@
+#include "sample_controls.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace caustics::sample {
+namespace {
+
+Result<uint32_t> parseWhole(const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
+    uint32_t value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size())
+        return makeError(option + ": '" + text + "' is not a whole number in [" + std::to_string(lo) + ", " +
+                         std::to_string(hi) + "]");
+    if (value < lo || value > hi)
+        return makeError(option + ": " + text + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return value;
+}
+
+// A number in (0, hi]: zero and negatives are refused, not clamped.
+Result<float> parsePositive(const std::string& option, const std::string& text, float hi) {
+    char* end = nullptr;
+    float value = std::strtof(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+        return makeError(option + ": '" + text + "' is not a number");
+    if (value <= 0.0f || value > hi) {
+        std::ostringstream s;
+        s << option << ": " << text << " is outside (0, " << hi << "]";
+        return makeError(s.str());
+    }
+    return value;
+}
+
+}  // namespace
+
+Result<bool> parseSampleControl(const std::string& option, const std::string& value, SampleControls& c) {
+    if (option == "--seed") {
+        CAUSTICS_TRY(c.seed, parseWhole(option, value, 0, 0xFFFFFFFFu));
+    } else if (option == "--accumulate") {
+        CAUSTICS_TRY(c.accumulate, parseWhole(option, value, 1, kMaxAccumulatedFrames));
+    } else if (option == "--sphere-radius-scale") {
+        CAUSTICS_TRY(c.sphereRadiusScale, parsePositive(option, value, kMaxSphereRadiusScale));
+    } else if (option == "--sphere-world-radius") {
+        CAUSTICS_TRY(c.sphereWorldRadius, parsePositive(option, value, kMaxSphereWorldRadius));
+        c.sphereWorldRadiusGiven = true;
+    } else if (option == "--sphere-radius-policy") {
+        if (value == "pixel") c.sphereRadiusPolicy = SphereRadiusChoice::Pixel;
+        else if (value == "world") c.sphereRadiusPolicy = SphereRadiusChoice::World;
+        else return makeError("--sphere-radius-policy: '" + value + "' is not pixel or world");
+    } else {
+        return false;
+    }
+    return true;
+}
+
+Status validateSampleControls(const SampleControls& c, bool window, bool framesGiven) {
+    if (c.accumulate > 0 && window) return makeError("--accumulate: writes a still image; it cannot be used with --window");
+    if (c.accumulate > 0 && framesGiven)
+        return makeError("--accumulate N renders N frames itself; leave out --frames");
+    if (c.sphereWorldRadiusGiven && c.sphereRadiusPolicy != SphereRadiusChoice::World)
+        return makeError("--sphere-world-radius: only used with --sphere-radius-policy world");
+    return okStatus();
+}
+
+const char* sampleControlsUsage() {
+    return "  --seed N                random seed of the caustic passes (default 1)\n"
+           "  --accumulate N          average N unfiltered frames with different random keys: a\n"
+           "                          reference-quality still (switches the filter off; 1..4096)\n"
+           "  --sphere-radius-policy pixel|world   second-type gather radius: pixel footprint (default) or fixed\n"
+           "  --sphere-radius-scale X radius in camera pixels for the pixel policy (default 2, at most 64)\n"
+           "  --sphere-world-radius X radius in metres for the world policy (default 0.01, at most 1000)\n";
+}
+
+}  // namespace caustics::sample

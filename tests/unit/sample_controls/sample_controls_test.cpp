@@ -1,0 +1,73 @@
+// caustics-sponza's sample controls: parsed values, and every bad value refused with a message that
+// names the option and its range (samples/sponza/sample_controls.h).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "cli_options.h"
+
+namespace caustics::sample {
+namespace {
+
+Result<CliOptions> parse(std::vector<std::string> args) {
+    args.insert(args.begin(), "caustics-sponza");
+    return parseCliOptions(args);
+}
+
+void expectRefused(std::vector<std::string> args, const std::string& mentions) {
+    auto r = parse(args);
+    ASSERT_FALSE(r.ok()) << "accepted: " << args[0] << " " << (args.size() > 1 ? args[1] : "");
+    EXPECT_NE(r.message().find(mentions), std::string::npos) << r.message();
+}
+
+TEST(SampleControls, DefaultsMatchCausticsSettings) {
+    auto r = parse({});
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r->controls.seed, 1u);
+    EXPECT_EQ(r->controls.accumulate, 0u);
+    EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 2.0f);
+    EXPECT_EQ(r->controls.sphereRadiusPolicy, SphereRadiusChoice::Pixel);
+    EXPECT_FLOAT_EQ(r->controls.sphereWorldRadius, 0.01f);
+}
+
+TEST(SampleControls, ParsesEveryControl) {
+    auto r = parse({"--seed", "4294967295", "--accumulate", "16", "--sphere-radius-policy", "world",
+                    "--sphere-world-radius", "0.02", "--sphere-radius-scale", "3.5"});
+    ASSERT_TRUE(r.ok()) << r.message();
+    EXPECT_EQ(r->controls.seed, 4294967295u);
+    EXPECT_EQ(r->controls.accumulate, 16u);
+    EXPECT_EQ(r->controls.sphereRadiusPolicy, SphereRadiusChoice::World);
+    EXPECT_FLOAT_EQ(r->controls.sphereWorldRadius, 0.02f);
+    EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 3.5f);
+}
+
+TEST(SampleControls, RefusesBadValuesNamingTheOptionAndRange) {
+    expectRefused({"--seed", "-1"}, "--seed");
+    expectRefused({"--seed", "4294967296"}, "--seed");
+    expectRefused({"--accumulate", "0"}, "--accumulate: 0 is outside [1, 4096]");
+    expectRefused({"--accumulate", "4097"}, "[1, 4096]");
+    expectRefused({"--accumulate", "two"}, "not a whole number");
+    expectRefused({"--sphere-radius-scale", "0"}, "--sphere-radius-scale: 0 is outside (0, 64]");
+    expectRefused({"--sphere-radius-scale", "65"}, "(0, 64]");
+    expectRefused({"--sphere-radius-scale", "nan"}, "not a number");
+    expectRefused({"--sphere-radius-policy", "screen"}, "not pixel or world");
+    expectRefused({"--sphere-radius-policy", "world", "--sphere-world-radius", "-0.1"}, "(0, 1000]");
+    expectRefused({"--seed"}, "--seed: missing value");
+}
+
+TEST(SampleControls, RefusesCombinationsThatCannotWork) {
+    expectRefused({"--sphere-world-radius", "0.02"}, "only used with --sphere-radius-policy world");
+    expectRefused({"--accumulate", "4", "--frames", "4"}, "leave out --frames");
+    expectRefused({"--accumulate", "4", "--window"}, "cannot be used with --window");
+}
+
+TEST(SampleControls, UsageListsTheControls) {
+    std::string usage = cliUsage();
+    for (const char* option : {"--seed", "--accumulate", "--sphere-radius-policy", "--sphere-radius-scale",
+                               "--sphere-world-radius", "--reference", "--window"})
+        EXPECT_NE(usage.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace caustics::sample
