@@ -12,22 +12,27 @@ Result<CommandListHandle> Device::createCommandList() {
                                               __uuidof(ID3D12GraphicsCommandList4), cl->list.putVoid())))
         return makeError("d3d12: could not create a command list (ID3D12GraphicsCommandList4 needs DXR-era drivers)");
     cl->list->Close();
-    CAUSTICS_TRY(cl->resourceRing, GpuDescriptorRing::create(device_.get(), D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV, kRingResources));
-    CAUSTICS_TRY(cl->samplerRing, GpuDescriptorRing::create(device_.get(), D3D12_DESCRIPTOR_HEAP_TYPE_SAMPLER, kRingSamplers));
-    CAUSTICS_TRY(cl->rtvHeap, CpuDescriptorHeap::create(device_.get(), D3D12_DESCRIPTOR_HEAP_TYPE_RTV, kRecordingRtvs));
-    CAUSTICS_TRY(cl->dsvHeap, CpuDescriptorHeap::create(device_.get(), D3D12_DESCRIPTOR_HEAP_TYPE_DSV, kRecordingDsvs));
-    CAUSTICS_TRY(cl->uavCpuHeap,
-                 CpuDescriptorHeap::create(device_.get(), D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV, kRecordingCpuUavs));
-    CAUSTICS_TRY(cl->rtvRange, cl->rtvHeap->allocate(kRecordingRtvs));
-    CAUSTICS_TRY(cl->dsvRange, cl->dsvHeap->allocate(kRecordingDsvs));
-    CAUSTICS_TRY(cl->uavCpuRange, cl->uavCpuHeap->allocate(kRecordingCpuUavs));
+    CAUSTICS_CHECK(cl->createDescriptorStorage(device_.get()));
     return CommandListHandle(cl);
+}
+
+Status CommandList::createDescriptorStorage(ID3D12Device* d3d) {
+    CAUSTICS_TRY(resourceRing, GpuDescriptorRing::create(d3d, D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV, kRingResources));
+    CAUSTICS_TRY(samplerRing, GpuDescriptorRing::create(d3d, D3D12_DESCRIPTOR_HEAP_TYPE_SAMPLER, kRingSamplers));
+    CAUSTICS_TRY(rtvHeap, CpuDescriptorHeap::create(d3d, D3D12_DESCRIPTOR_HEAP_TYPE_RTV, kRecordingRtvs));
+    CAUSTICS_TRY(dsvHeap, CpuDescriptorHeap::create(d3d, D3D12_DESCRIPTOR_HEAP_TYPE_DSV, kRecordingDsvs));
+    CAUSTICS_TRY(uavCpuHeap, CpuDescriptorHeap::create(d3d, D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV, kRecordingCpuUavs));
+    CAUSTICS_TRY(rtvRange, rtvHeap->allocate(kRecordingRtvs));
+    CAUSTICS_TRY(dsvRange, dsvHeap->allocate(kRecordingDsvs));
+    CAUSTICS_TRY(uavCpuRange, uavCpuHeap->allocate(kRecordingCpuUavs));
+    return okStatus();
 }
 
 Result<uint64_t> Device::submit(std::span<const CommandListHandle> lists) {
     std::vector<ID3D12CommandList*> raw;
     for (const CommandListHandle& h : lists) {
         auto* cl = static_cast<CommandList*>(h.get());
+        if (!cl->allocator) return makeError("d3d12: submit of a wrapped host command list; the host executes it itself");
         if (!cl->firstError.ok()) return cl->firstError.error();
         raw.push_back(cl->list.get());
     }

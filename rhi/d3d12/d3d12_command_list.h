@@ -40,14 +40,22 @@ public:
     ShaderTable* table = nullptr;
     Status firstError = okStatus();
 
+    // Shader-visible rings and per-recording CPU heaps (our lists and wrapped host lists alike).
+    Status createDescriptorStorage(ID3D12Device* d3d);
+
     void fail(Error e) {
         log(LogLevel::Error, e.message);
         if (firstError.ok()) firstError = std::move(e);
     }
 
+    // A host's list (d3d12_interop_command_list.cpp) has no allocator: the host resets and closes it.
+    bool timestampsAllowed = true;
+
     void begin() override {
-        allocator->Reset();
-        list->Reset(allocator.get(), nullptr);
+        if (allocator) {
+            allocator->Reset();
+            list->Reset(allocator.get(), nullptr);
+        }
         resourceRing->reset();
         samplerRing->reset();
         keepAlive.clear();
@@ -61,7 +69,9 @@ public:
         ID3D12DescriptorHeap* heaps[] = {resourceRing->heap(), samplerRing->heap()};
         list->SetDescriptorHeaps(2, heaps);
     }
-    void end() override { list->Close(); }
+    void end() override {
+        if (allocator) list->Close();
+    }
 
     void barriers(std::span<const TextureBarrier> textures, std::span<const BufferBarrier> buffers,
                   std::span<const AccelStructBarrier> accelStructs) override {
@@ -150,6 +160,9 @@ public:
     void writeTexture(const TextureHandle& dst, uint32_t layer, uint32_t mip, const void* data, uint64_t bytes) override;
     void copyTextureToBuffer(const BufferHandle& dst, uint64_t dstOffset, const TextureHandle& src, uint32_t layer,
                              uint32_t mip) override;
+    // d3d12_texture_to_texture_copy.cpp
+    void copyTexture(const TextureHandle& dst, const TextureRegion& dstRegion, const TextureHandle& src,
+                     const TextureRegion& srcRegion) override;
     void clearTextureFloat(const TextureHandle& texture, const float value[4]) override;
     void clearTextureUint(const TextureHandle& texture, const uint32_t value[4]) override;
     void clearTexture(Texture& texture, const float* floats, const uint32_t* uints);
@@ -254,10 +267,12 @@ public:
     }
 
     void resetTimestamps(const TimestampPoolHandle& pool, uint32_t first, uint32_t count) override {
+        if (!timestampsAllowed) return;
         auto* p = static_cast<TimestampPool*>(pool.get());
         for (uint32_t i = first; i < first + count && i < p->count; ++i) p->written[i] = 0;
     }
     void writeTimestamp(const TimestampPoolHandle& pool, uint32_t index) override {
+        if (!timestampsAllowed) return;
         auto* p = static_cast<TimestampPool*>(pool.get());
         list->EndQuery(p->heap.get(), D3D12_QUERY_TYPE_TIMESTAMP, index);
         list->ResolveQueryData(p->heap.get(), D3D12_QUERY_TYPE_TIMESTAMP, index, 1, p->readback.get(), uint64_t(index) * 8);
@@ -269,6 +284,9 @@ public:
         list->BeginEvent(kMarkerMetadataUnicode, payload.data(), UINT(payload.size() * sizeof(char16_t)));
     }
     void endMarker() override { list->EndEvent(); }
+    NativeObject getNativeObject(NativeObjectType type) const override {
+        return type == NativeObjectType::D3D12GraphicsCommandList ? NativeObject::from(list.get()) : NativeObject();
+    }
 };
 
 }  // namespace caustics::rhi::d3d12

@@ -108,6 +108,15 @@ Status Device::init(const DeviceDesc& desc) {
     }
     if (!found) return makeError("d3d12 backend: no suitable adapter:" + refusals);
 
+    D3D12_COMMAND_QUEUE_DESC q{};
+    q.Type = D3D12_COMMAND_LIST_TYPE_DIRECT;
+    if (!succeeded(device_->CreateCommandQueue(&q, __uuidof(ID3D12CommandQueue), queue_.putVoid())))
+        return makeError("d3d12: CreateCommandQueue failed");
+    return finishInit();
+}
+
+// What our own and a host's device (d3d12_device_wrap.cpp) share once device_ and queue_ exist.
+Status Device::finishInit() {
     caps_.driverName = "D3D12";
     // HLSL has no float atomic add at any shader model (SM 6.6 adds 64-bit integer atomics and only
     // bitwise float compare-exchange), so passes take fixed point or a CAS loop (radiance_atomics.hlsli).
@@ -120,10 +129,6 @@ Status Device::init(const DeviceDesc& desc) {
     caps_.maxInstanceCount = D3D12_RAYTRACING_MAX_INSTANCES_PER_TOP_LEVEL_ACCELERATION_STRUCTURE;
     caps_.minAccelStructScratchAlignment = D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT;
 
-    D3D12_COMMAND_QUEUE_DESC q{};
-    q.Type = D3D12_COMMAND_LIST_TYPE_DIRECT;
-    if (!succeeded(device_->CreateCommandQueue(&q, __uuidof(ID3D12CommandQueue), queue_.putVoid())))
-        return makeError("d3d12: CreateCommandQueue failed");
     uint64_t frequency = 0;
     if (succeeded(queue_->GetTimestampFrequency(&frequency)) && frequency) caps_.timestampPeriodNs = 1e9 / double(frequency);
     if (!succeeded(device_->CreateFence(0, D3D12_FENCE_FLAG_NONE, __uuidof(ID3D12Fence), fence_.putVoid())))

@@ -18,13 +18,20 @@ struct RuntimeLibraries {
     RuntimeLibrary dxcompiler;
 };
 
+// d3d12, dxcompiler (both required) and dxcore (optional), loaded at run time (d3d12_device_factory.cpp).
+Result<RuntimeLibraries> loadRuntimeLibraries();
+
 class Device final : public IDevice, public std::enable_shared_from_this<Device> {
 public:
     static Result<DeviceHandle> create(const DeviceDesc& desc, RuntimeLibraries libs);
+    // Over a host engine's device and queue (d3d12_device_wrap.cpp, d3d12_interop.h).
+    static Result<DeviceHandle> wrap(ID3D12Device5* device, ID3D12CommandQueue* queue, const std::string& name,
+                                     RuntimeLibraries libs);
     ~Device() override;
 
     Backend backend() const override { return Backend::D3D12; }
     const Capabilities& capabilities() const override { return caps_; }
+    NativeObject getNativeObject(NativeObjectType type) const override;
 
     Result<BufferHandle> createBuffer(const BufferDesc& desc) override;
     Result<TextureHandle> createTexture(const TextureDesc& desc) override;
@@ -55,6 +62,10 @@ public:
     Status waitIdle() override;
     Status readBuffer(const BufferHandle& buffer, void* dst, uint64_t bytes, uint64_t offset = 0) override;
 
+    // A fence value for a host's own ExecuteCommandLists to signal (d3d12_device_wrap.cpp):
+    // waitForFence then waits for the host's submission like for ours.
+    std::pair<ID3D12Fence*, uint64_t> reserveHostSignal();
+
     // For the backend's own objects.
     ID3D12Device5* d3d() const { return device_.get(); }
     CpuDescriptorHeap& cpuResourceDescriptors() { return *cpuResources_; }
@@ -71,6 +82,7 @@ public:
 private:
     Device() = default;
     Status init(const DeviceDesc& desc);
+    Status finishInit();
 
     RuntimeLibraries libs_;
     Capabilities caps_;

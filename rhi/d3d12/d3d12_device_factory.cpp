@@ -5,7 +5,7 @@
 
 namespace caustics::rhi::d3d12 {
 
-Result<DeviceHandle> createDevice(const DeviceDesc& desc) {
+Result<RuntimeLibraries> loadRuntimeLibraries() {
     RuntimeLibraries libs;
     auto d3d12 = RuntimeLibrary::open(d3d12LibraryCandidates(), d3d12LibraryAdvice());
     if (!d3d12) return makeError("d3d12 backend: " + d3d12.message());
@@ -17,6 +17,11 @@ Result<DeviceHandle> createDevice(const DeviceDesc& desc) {
     // DXCore is optional: without it the default adapter is used.
     auto dxcore = RuntimeLibrary::open(dxcoreLibraryCandidates(), "");
     if (dxcore) libs.dxcore = std::move(dxcore).value();
+    return libs;
+}
+
+Result<DeviceHandle> createDevice(const DeviceDesc& desc) {
+    CAUSTICS_TRY(RuntimeLibraries libs, loadRuntimeLibraries());
     return Device::create(desc, std::move(libs));
 }
 

@@ -24,6 +24,9 @@ public:
     const BufferDesc& desc() const override { return desc_; }
     uint64_t deviceAddress() const override { return resource ? resource->GetGPUVirtualAddress() : 0; }
     void* mappedData() override { return mapped; }
+    NativeObject getNativeObject(NativeObjectType type) const override {
+        return type == NativeObjectType::D3D12Resource ? NativeObject::from(resource.get()) : NativeObject();
+    }
 };
 
 class Texture final : public ITexture {
@@ -32,6 +35,9 @@ public:
     ComPtr<ID3D12Resource> resource;
     D3D12_RESOURCE_STATES state = D3D12_RESOURCE_STATE_COMMON;
     const TextureDesc& desc() const override { return desc_; }
+    NativeObject getNativeObject(NativeObjectType type) const override {
+        return type == NativeObjectType::D3D12Resource ? NativeObject::from(resource.get()) : NativeObject();
+    }
 };
 
 class Sampler final : public ISampler {
@@ -98,8 +104,12 @@ public:
     ComPtr<ID3D12Resource> instances;  // top level: upload buffer for host instances
     void* instancesMapped = nullptr;
     uint64_t storageSize = 0;
+    uint64_t storageOffset = 0;   // non-zero only for a host's structure inside a larger buffer
     const AccelStructDesc& desc() const override { return desc_; }
-    uint64_t deviceAddress() const override { return storage ? storage->GetGPUVirtualAddress() : 0; }
+    uint64_t deviceAddress() const override { return storage ? storage->GetGPUVirtualAddress() + storageOffset : 0; }
+    NativeObject getNativeObject(NativeObjectType type) const override {
+        return type == NativeObjectType::D3D12Resource ? NativeObject::from(storage.get()) : NativeObject();
+    }
     uint64_t storageBytes() const override { return storageSize; }
 };
 

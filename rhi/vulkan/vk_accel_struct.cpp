@@ -146,8 +146,24 @@ Result<std::shared_ptr<VulkanAccelStruct>> VulkanAccelStruct::create(const Conte
     return as;
 }
 
+std::shared_ptr<VulkanAccelStruct> VulkanAccelStruct::wrap(const ContextPtr& context, const AccelStructDesc& desc,
+                                                           VkAccelerationStructureKHR handle, uint64_t deviceAddress) {
+    std::shared_ptr<VulkanAccelStruct> wrapped(new VulkanAccelStruct(context, desc));
+    wrapped->handle_ = handle;
+    wrapped->deviceAddress_ = deviceAddress;
+    wrapped->ownsHandle_ = false;
+    wrapped->built = true;
+    return wrapped;
+}
+
+NativeObject VulkanAccelStruct::getNativeObject(NativeObjectType type) const {
+    if (type == NativeObjectType::VkAccelerationStructureKHR) return NativeObject::from(handle_);
+    if (type == NativeObjectType::VkBuffer && storage_) return storage_->getNativeObject(type);
+    return {};
+}
+
 VulkanAccelStruct::~VulkanAccelStruct() {
-    if (handle_ == VK_NULL_HANDLE) return;
+    if (handle_ == VK_NULL_HANDLE || !ownsHandle_) return;
     // The storage buffer travels with the deferred destruction so it outlives the handle.
     context_->deferDestroy([context = context_.get(), handle = handle_, storage = storage_]() {
         context->fn.vkDestroyAccelerationStructureKHR(context->device, handle, nullptr);

@@ -31,9 +31,13 @@ public:
     // structure of exactly that size (compaction target, whose size comes from a query).
     static Result<std::shared_ptr<VulkanAccelStruct>> create(const ContextPtr& context, const AccelStructDesc& desc,
                                                              uint64_t storageBytes = 0);
+    // A host engine's structure (vk_interop_resources.cpp): never destroyed here; it counts as built.
+    static std::shared_ptr<VulkanAccelStruct> wrap(const ContextPtr& context, const AccelStructDesc& desc,
+                                                   VkAccelerationStructureKHR handle, uint64_t deviceAddress);
     ~VulkanAccelStruct() override;
 
     const AccelStructDesc& desc() const override { return desc_; }
+    NativeObject getNativeObject(NativeObjectType type) const override;
     uint64_t deviceAddress() const override { return deviceAddress_; }
     uint64_t storageBytes() const override { return storageBytes_; }
 
@@ -53,6 +57,7 @@ private:
     AccelStructDesc desc_;
     BufferHandle storage_;
     VkAccelerationStructureKHR handle_ = VK_NULL_HANDLE;
+    bool ownsHandle_ = true;
     uint64_t deviceAddress_ = 0;
     uint64_t storageBytes_ = 0;
     uint64_t buildScratchBytes_ = 0;

@@ -51,9 +51,19 @@ Result<std::shared_ptr<VulkanBuffer>> VulkanBuffer::create(const ContextPtr& con
     return buffer;
 }
 
+std::shared_ptr<VulkanBuffer> VulkanBuffer::wrap(const ContextPtr& context, const BufferDesc& desc, VkBuffer buffer,
+                                                 uint64_t deviceAddress) {
+    std::shared_ptr<VulkanBuffer> wrapped(new VulkanBuffer(context, desc));
+    wrapped->buffer_ = buffer;
+    wrapped->deviceAddress_ = deviceAddress;
+    wrapped->ownsBuffer_ = false;
+    context->setName(VK_OBJECT_TYPE_BUFFER, buffer, desc.debugName);
+    return wrapped;
+}
+
 VulkanBuffer::~VulkanBuffer() {
     ContextPtr ctx = context_;
-    VkBuffer buffer = buffer_;
+    VkBuffer buffer = ownsBuffer_ ? buffer_ : VK_NULL_HANDLE;
     MemoryAllocation allocation = allocation_;
     ctx->deferDestroy([ctx, buffer, allocation] {
         if (buffer != VK_NULL_HANDLE) vkDestroyBuffer(ctx->device, buffer, nullptr);

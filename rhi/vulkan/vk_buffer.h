@@ -14,9 +14,15 @@ class VulkanBuffer final : public IBuffer {
 public:
     // Creates the VkBuffer and, unless desc.isVirtual, its memory.
     static Result<std::shared_ptr<VulkanBuffer>> create(const ContextPtr& context, const BufferDesc& desc);
+    // A host engine's buffer (vk_interop_resources.cpp): never destroyed here.
+    static std::shared_ptr<VulkanBuffer> wrap(const ContextPtr& context, const BufferDesc& desc, VkBuffer buffer,
+                                              uint64_t deviceAddress);
     ~VulkanBuffer() override;
 
     const BufferDesc& desc() const override { return desc_; }
+    NativeObject getNativeObject(NativeObjectType type) const override {
+        return type == NativeObjectType::VkBuffer ? NativeObject::from(buffer_) : NativeObject();
+    }
     uint64_t deviceAddress() const override { return deviceAddress_; }
     void* mappedData() override { return mapped_; }
 
@@ -32,6 +38,7 @@ private:
     ContextPtr context_;
     BufferDesc desc_;
     VkBuffer buffer_ = VK_NULL_HANDLE;
+    bool ownsBuffer_ = true;
     MemoryAllocation allocation_;   // empty for virtual buffers
     uint64_t deviceAddress_ = 0;
     void* mapped_ = nullptr;

@@ -55,11 +55,27 @@ void VulkanCommandList::releaseResources() {
     retained_.clear();
 }
 
+std::shared_ptr<VulkanCommandList> VulkanCommandList::wrap(VulkanDevice& device, VkCommandBuffer commandBuffer,
+                                                          bool allowTimestamps) {
+    std::shared_ptr<VulkanCommandList> list(new VulkanCommandList(device.shared_from_this(), device.contextPtr()));
+    list->commandBuffer_ = commandBuffer;
+    list->wrapped_ = true;
+    list->recording_ = true;   // the host began it
+    list->timestampsAllowed_ = allowTimestamps;
+    return list;
+}
+
 void VulkanCommandList::begin() {
-    releaseResources();
+    // A wrapped list's staging buffers may still be in use by the host's last submission unless the
+    // host told us when it completes (vulkanSubmitSignal); then they wait for it like ours do.
+    if (!wrapped_ || submittedFence_ != 0) releaseResources();
     error_.reset();
     rayTracing_ = {};
     boundLayout_ = VK_NULL_HANDLE;
+    if (wrapped_) {
+        recording_ = true;
+        return;
+    }
     vkResetCommandBuffer(commandBuffer_, 0);
     VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -69,6 +85,10 @@ void VulkanCommandList::begin() {
 }
 
 void VulkanCommandList::end() {
+    if (wrapped_) {
+        recording_ = false;
+        return;
+    }
     VkResult r = vkEndCommandBuffer(commandBuffer_);
     if (r != VK_SUCCESS) recordError(vkError(r, "vkEndCommandBuffer").message);
     recording_ = false;
@@ -207,11 +227,13 @@ void VulkanCommandList::setPushConstants(const void* data, uint32_t bytes) {
 }
 
 void VulkanCommandList::resetTimestamps(const TimestampPoolHandle& pool, uint32_t first, uint32_t count) {
+    if (!timestampsAllowed_) return;
     vkCmdResetQueryPool(commandBuffer_, toVk(pool)->handle(), first, count);
     retain(pool);
 }
 
 void VulkanCommandList::writeTimestamp(const TimestampPoolHandle& pool, uint32_t index) {
+    if (!timestampsAllowed_) return;
     vkCmdWriteTimestamp2(commandBuffer_, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, toVk(pool)->handle(), index);
     retain(pool);
 }

@@ -21,6 +21,10 @@ class VulkanDevice;
 class VulkanCommandList final : public ICommandList {
 public:
     static Result<std::shared_ptr<VulkanCommandList>> create(VulkanDevice& device);
+    // Records into a host engine's command buffer, already begun (vk_interop_command_list.cpp):
+    // begin()/end() then record nothing and the buffer is never reset, ended, submitted or freed.
+    static std::shared_ptr<VulkanCommandList> wrap(VulkanDevice& device, VkCommandBuffer commandBuffer,
+                                                   bool allowTimestamps);
     ~VulkanCommandList() override;
 
     void begin() override;
@@ -35,6 +39,8 @@ public:
     void fillBuffer(const BufferHandle& dst, uint32_t value, uint64_t offset = 0, uint64_t bytes = ~0ull) override;
     void writeTexture(const TextureHandle& dst, uint32_t layer, uint32_t mip, const void* data,
                       uint64_t bytes) override;
+    void copyTexture(const TextureHandle& dst, const TextureRegion& dstRegion, const TextureHandle& src,
+                     const TextureRegion& srcRegion) override;
     void copyTextureToBuffer(const BufferHandle& dst, uint64_t dstOffset, const TextureHandle& src,
                              uint32_t layer = 0, uint32_t mip = 0) override;
     void clearTextureFloat(const TextureHandle& texture, const float value[4]) override;
@@ -73,6 +79,10 @@ public:
     void beginMarker(std::string_view name) override;
     void endMarker() override;
 
+    NativeObject getNativeObject(NativeObjectType type) const override {
+        return type == NativeObjectType::VkCommandBuffer ? NativeObject::from(commandBuffer_) : NativeObject();
+    }
+
     // ---- For the device and the ray-tracing file ----
     VkCommandBuffer commandBuffer() const { return commandBuffer_; }
     const VulkanContext& context() const { return *context_; }
@@ -108,6 +118,7 @@ public:
     // Called by VulkanDevice::submit with the fence value that will signal when the list completes.
     void markSubmitted(uint64_t fenceValue) { submittedFence_ = fenceValue; }
     bool isRecording() const { return recording_; }
+    bool isWrapped() const { return wrapped_; }
 
 private:
     VulkanCommandList(std::shared_ptr<VulkanDevice> device, ContextPtr context)
@@ -120,6 +131,8 @@ private:
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
     bool recording_ = false;
+    bool wrapped_ = false;             // the host's command buffer
+    bool timestampsAllowed_ = true;    // false: timestamp calls record nothing
     uint64_t submittedFence_ = 0;
     VkPipelineLayout boundLayout_ = VK_NULL_HANDLE;
     VkPipelineBindPoint boundBindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <string>
 
+#include "../core/texture_copy_check.h"
 #include "vk_buffer.h"
 #include "vk_command_list.h"
 #include "vk_texture.h"
@@ -90,6 +91,28 @@ void VulkanCommandList::copyTextureToBuffer(const BufferHandle& dst, uint64_t ds
     VkBufferImageCopy region = textureRegion(*t, layer, mip, dstOffset);
     vkCmdCopyImageToBuffer(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, toVk(dst)->handle(), 1,
                            &region);
+    retain(dst);
+    retain(src);
+}
+
+void VulkanCommandList::copyTexture(const TextureHandle& dst, const TextureRegion& dstRegion, const TextureHandle& src,
+                                    const TextureRegion& srcRegion) {
+    VulkanTexture* d = toVk(dst);
+    VulkanTexture* s = toVk(src);
+    auto extent = checkTextureCopy(d->desc(), dstRegion, s->desc(), srcRegion);
+    if (!extent) return recordError("vulkan: " + extent.message());
+    auto copyAspect = [](const VulkanTexture& t) {
+        VkImageAspectFlags aspect = t.aspect();
+        return (aspect & VK_IMAGE_ASPECT_DEPTH_BIT) ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT) : aspect;
+    };
+    VkImageCopy region{};
+    region.srcSubresource = {copyAspect(*s), srcRegion.mip, srcRegion.layer, 1};
+    region.srcOffset = {int32_t(srcRegion.x), int32_t(srcRegion.y), 0};
+    region.dstSubresource = {copyAspect(*d), dstRegion.mip, dstRegion.layer, 1};
+    region.dstOffset = {int32_t(dstRegion.x), int32_t(dstRegion.y), 0};
+    region.extent = {extent->width, extent->height, 1};
+    vkCmdCopyImage(commandBuffer_, s->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d->handle(),
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
     retain(dst);
     retain(src);
 }

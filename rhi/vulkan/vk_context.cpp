@@ -11,13 +11,14 @@ VulkanContext::VulkanContext() = default;
 
 VulkanContext::~VulkanContext() {
     if (device != VK_NULL_HANDLE) {
-        vkDeviceWaitIdle(device);
+        waitForKnownWork();
         collectGarbage(true);
         descriptors.reset();
         allocator.reset();
         if (timeline != VK_NULL_HANDLE) vkDestroySemaphore(device, timeline, nullptr);
-        vkDestroyDevice(device, nullptr);
+        if (ownsDevice) vkDestroyDevice(device, nullptr);
     }
+    if (!ownsDevice) return;
     if (messenger != VK_NULL_HANDLE && fn.vkDestroyDebugUtilsMessengerEXT)
         fn.vkDestroyDebugUtilsMessengerEXT(instance, messenger, nullptr);
     if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
@@ -37,6 +38,25 @@ uint64_t VulkanContext::completedValue() const {
     uint64_t value = 0;
     if (timeline != VK_NULL_HANDLE) vkGetSemaphoreCounterValue(device, timeline, &value);
     return value;
+}
+
+void VulkanContext::waitForKnownWork() {
+    if (device == VK_NULL_HANDLE) return;
+    if (ownsDevice) {
+        vkDeviceWaitIdle(device);
+        return;
+    }
+    if (timeline == VK_NULL_HANDLE) return;
+    uint64_t value;
+    {
+        std::lock_guard lock(garbageMutex_);
+        value = lastSubmitted;
+    }
+    VkSemaphoreWaitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO};
+    wait.semaphoreCount = 1;
+    wait.pSemaphores = &timeline;
+    wait.pValues = &value;
+    vkWaitSemaphores(device, &wait, UINT64_MAX);
 }
 
 void VulkanContext::deferDestroy(std::function<void()> destroy) {

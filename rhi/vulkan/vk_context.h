@@ -54,6 +54,9 @@ struct VulkanContext {
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;      // graphics + compute (+ transfer) queue
     uint32_t queueFamily = 0;
+    // False for a host engine's device (vk_device_wrap.cpp): the instance, device and queue are the
+    // host's and are never destroyed here; only what this backend created is.
+    bool ownsDevice = true;
 
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memoryProperties{};
@@ -73,7 +76,7 @@ struct VulkanContext {
     uint64_t lastSubmitted = 0;
 
     VulkanContext();
-    ~VulkanContext();   // destroys the device and instance after all objects released their handles
+    ~VulkanContext();   // destroys the device and instance (if owned) after all objects released their handles
     VulkanContext(const VulkanContext&) = delete;
     VulkanContext& operator=(const VulkanContext&) = delete;
 
@@ -86,6 +89,9 @@ struct VulkanContext {
 
     // The largest fence value the GPU has completed (queries the timeline semaphore).
     uint64_t completedValue() const;
+    // Waits for all work this backend knows of: the whole device if it owns it, else every value of
+    // the timeline handed out (a host's device may be busy with the host's own work on other queues).
+    void waitForKnownWork();
 
     // Runs `destroy` once the GPU has finished every submission made so far (objects dropped while a
     // command list that uses them is in flight must not be destroyed at once). Thread-safe.

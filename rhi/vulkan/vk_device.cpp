@@ -27,8 +27,18 @@ Result<std::shared_ptr<VulkanDevice>> VulkanDevice::create(const DeviceDesc& des
 
 VulkanDevice::~VulkanDevice() {
     // The context (and VkDevice) lives on while objects hold it; make sure nothing is in flight.
-    if (context_ && context_->device) vkDeviceWaitIdle(context_->device);
+    if (context_) context_->waitForKnownWork();
     if (context_) context_->collectGarbage(true);
+}
+
+NativeObject VulkanDevice::getNativeObject(NativeObjectType type) const {
+    switch (type) {
+        case NativeObjectType::VkInstance: return NativeObject::from(context_->instance);
+        case NativeObjectType::VkPhysicalDevice: return NativeObject::from(context_->physicalDevice);
+        case NativeObjectType::VkDevice: return NativeObject::from(context_->device);
+        case NativeObjectType::VkQueue: return NativeObject::from(context_->queue);
+        default: return {};
+    }
 }
 
 Result<BufferHandle> VulkanDevice::createBuffer(const BufferDesc& desc) {

@@ -25,10 +25,15 @@ namespace caustics::rhi::vulkan {
 class VulkanDevice final : public IDevice, public std::enable_shared_from_this<VulkanDevice> {
 public:
     static Result<std::shared_ptr<VulkanDevice>> create(const DeviceDesc& desc);
+    // Over a context whose device already exists (a host engine's, vk_device_wrap.cpp).
+    static std::shared_ptr<VulkanDevice> adopt(ContextPtr context) {
+        return std::shared_ptr<VulkanDevice>(new VulkanDevice(std::move(context)));
+    }
     ~VulkanDevice() override;
 
     Backend backend() const override { return Backend::Vulkan; }
     const Capabilities& capabilities() const override { return context_->capabilities; }
+    NativeObject getNativeObject(NativeObjectType type) const override;
 
     Result<BufferHandle> createBuffer(const BufferDesc& desc) override;
     Result<TextureHandle> createTexture(const TextureDesc& desc) override;

@@ -12,6 +12,8 @@ Result<uint64_t> VulkanDevice::submit(std::span<const CommandListHandle> lists) 
     std::vector<VkCommandBufferSubmitInfo> buffers;
     for (const CommandListHandle& handle : lists) {
         VulkanCommandList* list = toVk(handle);
+        if (list->isWrapped())
+            return makeError("vulkan: submit of a wrapped host command buffer; the host submits it itself");
         if (list->isRecording()) return makeError("vulkan: submit of a command list that was not end()ed");
         if (list->recordingError()) return list->recordingError().value();
         VkCommandBufferSubmitInfo b{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "vk_device_setup.h"
 #include "vk_instance.h"
 
 namespace caustics::rhi::vulkan {
@@ -108,11 +109,6 @@ std::string evaluate(VkPhysicalDevice physical, const DeviceDesc& desc, Candidat
     return refuse("a graphics+compute queue with timestamps", "the vulkan backend");
 }
 
-template <typename T>
-T load(VkDevice device, const char* name) {
-    return reinterpret_cast<T>(vkGetDeviceProcAddr(device, name));
-}
-
 }  // namespace
 
 Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc) {
@@ -208,76 +204,11 @@ Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc) {
     context.physicalDevice = chosen.device;
     context.queueFamily = chosen.queueFamily;
     vkGetDeviceQueue(context.device, chosen.queueFamily, 0, &context.queue);
-    vkGetPhysicalDeviceMemoryProperties(chosen.device, &context.memoryProperties);
-
-    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-    props.pNext = &driver;
-    if (asExt) {
-        context.accelStructProperties.pNext = driver.pNext;
-        driver.pNext = &context.accelStructProperties;
-    }
-    if (rtExt) {
-        context.rayTracingProperties.pNext = driver.pNext;
-        driver.pNext = &context.rayTracingProperties;
-    }
-    vkGetPhysicalDeviceProperties2(chosen.device, &props);
-    context.rayTracingProperties.pNext = nullptr;
-    context.accelStructProperties.pNext = nullptr;
-    context.properties = props.properties;
-
-    Capabilities& caps = context.capabilities;
-    caps.adapterName = props.properties.deviceName;
-    caps.driverName = std::string(driver.driverName) + " " + driver.driverInfo;
-    caps.accelerationStructure = asExt;
-    caps.rayTracingPipeline = rtExt;
-    caps.rayQuery = rayQuery;
-    caps.shaderFloatAtomicAdd =
-        atomicFloat && s.atomicFloat.shaderBufferFloat32AtomicAdd && s.atomicFloat.shaderImageFloat32AtomicAdd;
-    if (rtExt) {
-        const auto& rp = context.rayTracingProperties;
-        caps.shaderGroupHandleSize = rp.shaderGroupHandleSize;
-        caps.shaderGroupHandleAlignment = rp.shaderGroupHandleAlignment;
-        caps.shaderGroupBaseAlignment = rp.shaderGroupBaseAlignment;
-        caps.maxShaderGroupStride = rp.maxShaderGroupStride;
-        caps.maxRayRecursionDepth = rp.maxRayRecursionDepth;
-    }
-    if (asExt) {
-        caps.maxInstanceCount = uint32_t(std::min<uint64_t>(context.accelStructProperties.maxInstanceCount, UINT32_MAX));
-        caps.minAccelStructScratchAlignment = context.accelStructProperties.minAccelerationStructureScratchOffsetAlignment;
-    }
-    caps.timestampPeriodNs = props.properties.limits.timestampPeriod;
-
-    VulkanDispatch& fn = context.fn;
-    fn.vkCmdBeginRendering = load<PFN_vkCmdBeginRendering>(context.device, "vkCmdBeginRendering");
-    fn.vkCmdEndRendering = load<PFN_vkCmdEndRendering>(context.device, "vkCmdEndRendering");
-    fn.vkCmdPipelineBarrier2 = load<PFN_vkCmdPipelineBarrier2>(context.device, "vkCmdPipelineBarrier2");
-    if (asExt) {
-#define CAUSTICS_LOAD(name) fn.name = load<PFN_##name>(context.device, #name)
-        CAUSTICS_LOAD(vkCreateAccelerationStructureKHR);
-        CAUSTICS_LOAD(vkDestroyAccelerationStructureKHR);
-        CAUSTICS_LOAD(vkGetAccelerationStructureBuildSizesKHR);
-        CAUSTICS_LOAD(vkCmdBuildAccelerationStructuresKHR);
-        CAUSTICS_LOAD(vkGetAccelerationStructureDeviceAddressKHR);
-        CAUSTICS_LOAD(vkCmdWriteAccelerationStructuresPropertiesKHR);
-        CAUSTICS_LOAD(vkCmdCopyAccelerationStructureKHR);
-    }
-    if (rtExt) {
-        CAUSTICS_LOAD(vkCreateRayTracingPipelinesKHR);
-        CAUSTICS_LOAD(vkGetRayTracingShaderGroupHandlesKHR);
-        CAUSTICS_LOAD(vkCmdTraceRaysKHR);
-#undef CAUSTICS_LOAD
-    }
-
-    VkSemaphoreTypeCreateInfo type{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
-    type.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
-    type.initialValue = 0;
-    VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    semaphore.pNext = &type;
-    r = vkCreateSemaphore(context.device, &semaphore, nullptr, &context.timeline);
-    if (r != VK_SUCCESS) return vkError(r, "vkCreateSemaphore (timeline)");
-    context.setName(VK_OBJECT_TYPE_SEMAPHORE, context.timeline, "device fence");
-    return okStatus();
+    return finishDeviceSetup(context,
+                             {asExt, rtExt, rayQuery,
+                              atomicFloat && s.atomicFloat.shaderBufferFloat32AtomicAdd &&
+                                  s.atomicFloat.shaderImageFloat32AtomicAdd},
+                             vkGetDeviceProcAddr);
 }
 
 }  // namespace caustics::rhi::vulkan

@@ -50,9 +50,19 @@ Result<std::shared_ptr<VulkanTexture>> VulkanTexture::create(const ContextPtr& c
     return texture;
 }
 
+std::shared_ptr<VulkanTexture> VulkanTexture::wrap(const ContextPtr& context, const TextureDesc& desc, VkImage image,
+                                                   VkFormat format) {
+    std::shared_ptr<VulkanTexture> texture(new VulkanTexture(context, desc));
+    texture->image_ = image;
+    texture->format_ = format;
+    texture->ownsImage_ = false;
+    context->setName(VK_OBJECT_TYPE_IMAGE, image, desc.debugName);
+    return texture;
+}
+
 VulkanTexture::~VulkanTexture() {
     ContextPtr ctx = context_;
-    VkImage image = image_;
+    VkImage image = ownsImage_ ? image_ : VK_NULL_HANDLE;
     MemoryAllocation allocation = allocation_;
     std::vector<VkImageView> views;
     for (auto& [key, view] : views_) views.push_back(view);

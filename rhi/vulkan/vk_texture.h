@@ -17,9 +17,15 @@ VkImageAspectFlags aspectOf(Format format);
 class VulkanTexture final : public ITexture {
 public:
     static Result<std::shared_ptr<VulkanTexture>> create(const ContextPtr& context, const TextureDesc& desc);
+    // A host engine's image (vk_interop_resources.cpp): never destroyed here; only our views are.
+    static std::shared_ptr<VulkanTexture> wrap(const ContextPtr& context, const TextureDesc& desc, VkImage image,
+                                               VkFormat format);
     ~VulkanTexture() override;
 
     const TextureDesc& desc() const override { return desc_; }
+    NativeObject getNativeObject(NativeObjectType type) const override {
+        return type == NativeObjectType::VkImage ? NativeObject::from(image_) : NativeObject();
+    }
 
     VkImage handle() const { return image_; }
     VkFormat format() const { return format_; }
@@ -43,6 +49,7 @@ private:
     TextureDesc desc_;
     VkImage image_ = VK_NULL_HANDLE;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
+    bool ownsImage_ = true;
     MemoryAllocation allocation_;
     std::mutex viewMutex_;
     std::map<uint64_t, VkImageView> views_;   // key: (kind << 48) | (layer << 16) | mip

@@ -52,6 +52,8 @@ public:
     void copyBuffer(const rhi::BufferHandle&, uint64_t, const rhi::BufferHandle&, uint64_t, uint64_t) override {}
     void fillBuffer(const rhi::BufferHandle&, uint32_t, uint64_t, uint64_t) override {}
     void writeTexture(const rhi::TextureHandle&, uint32_t, uint32_t, const void*, uint64_t) override {}
+    void copyTexture(const rhi::TextureHandle&, const rhi::TextureRegion&, const rhi::TextureHandle&,
+                     const rhi::TextureRegion&) override {}
     void copyTextureToBuffer(const rhi::BufferHandle&, uint64_t, const rhi::TextureHandle&, uint32_t,
                              uint32_t) override {}
     void clearTextureFloat(const rhi::TextureHandle&, const float[4]) override {}

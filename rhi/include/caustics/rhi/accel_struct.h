@@ -76,6 +76,8 @@ public:
     virtual const AccelStructDesc& desc() const = 0;
     virtual uint64_t deviceAddress() const = 0;   // what an instance refers to
     virtual uint64_t storageBytes() const = 0;    // size of the backing buffer
+    // VkAccelerationStructureKHR / VkBuffer of its storage / ID3D12Resource of its storage.
+    virtual NativeObject getNativeObject(NativeObjectType) const { return {}; }
 };
 using AccelStructHandle = std::shared_ptr<IAccelStruct>;
 

@@ -42,6 +42,17 @@ struct AccelStructBarrier {
     ResourceState after = ResourceState::AccelStructRead;
 };
 
+// One mip level of one array layer, and a rectangle in it. width/height 0 = to the edge of the mip.
+struct TextureRegion {
+    uint32_t layer = 0, mip = 0;
+    uint32_t x = 0, y = 0;
+    uint32_t width = 0, height = 0;
+    TextureRegion& setLayer(uint32_t v) { layer = v; return *this; }
+    TextureRegion& setMip(uint32_t v) { mip = v; return *this; }
+    TextureRegion& setOffset(uint32_t vx, uint32_t vy) { x = vx; y = vy; return *this; }
+    TextureRegion& setSize(uint32_t w, uint32_t h) { width = w; height = h; return *this; }
+};
+
 struct ColorAttachment {
     TextureHandle texture;
     uint32_t layer = 0;
@@ -88,6 +99,11 @@ public:
     // Tightly packed rows; layer selects an array layer.
     virtual void writeTexture(const TextureHandle& dst, uint32_t layer, uint32_t mip, const void* data,
                               uint64_t bytes) = 0;
+    // Texture to texture on the GPU: `srcRegion`'s rectangle lands at dstRegion's layer, mip and offset
+    // (dstRegion's size is ignored). Both formats must have the same bytes per texel; src in CopySource,
+    // dst in CopyDest. A region outside either texture is a recording error (reported by submit).
+    virtual void copyTexture(const TextureHandle& dst, const TextureRegion& dstRegion, const TextureHandle& src,
+                             const TextureRegion& srcRegion) = 0;
     virtual void copyTextureToBuffer(const BufferHandle& dst, uint64_t dstOffset, const TextureHandle& src,
                                      uint32_t layer = 0, uint32_t mip = 0) = 0;
     // Texture in CopyDest. Float formats take `value` as floats, integer formats as bit patterns.
@@ -130,6 +146,9 @@ public:
     virtual void writeTimestamp(const TimestampPoolHandle& pool, uint32_t index) = 0;
     virtual void beginMarker(std::string_view name) = 0;
     virtual void endMarker() = 0;
+
+    // VkCommandBuffer / ID3D12GraphicsCommandList4 (native_object.h).
+    virtual NativeObject getNativeObject(NativeObjectType) const { return {}; }
 };
 using CommandListHandle = std::shared_ptr<ICommandList>;
 

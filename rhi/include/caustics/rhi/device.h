@@ -53,6 +53,8 @@ public:
     virtual ~IDevice() = default;
     virtual Backend backend() const = 0;
     virtual const Capabilities& capabilities() const = 0;
+    // VkInstance, VkPhysicalDevice, VkDevice, VkQueue / ID3D12Device5, ID3D12CommandQueue (native_object.h).
+    virtual NativeObject getNativeObject(NativeObjectType) const { return {}; }
 
     virtual Result<BufferHandle> createBuffer(const BufferDesc& desc) = 0;
     virtual Result<TextureHandle> createTexture(const TextureDesc& desc) = 0;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "caustics/rhi/format.h"
+#include "caustics/rhi/native_object.h"
 #include "caustics/rhi/resource_state.h"
 
 namespace caustics::rhi {
@@ -56,6 +57,8 @@ public:
     virtual uint64_t deviceAddress() const = 0;
     // Persistently mapped pointer for Upload/Readback memory; nullptr for DeviceLocal.
     virtual void* mappedData() = 0;
+    // VkBuffer / ID3D12Resource; null for other types (native_object.h).
+    virtual NativeObject getNativeObject(NativeObjectType) const { return {}; }
 };
 using BufferHandle = std::shared_ptr<IBuffer>;
 
@@ -99,6 +102,8 @@ class ITexture {
 public:
     virtual ~ITexture() = default;
     virtual const TextureDesc& desc() const = 0;
+    // VkImage / ID3D12Resource; null for other types (native_object.h).
+    virtual NativeObject getNativeObject(NativeObjectType) const { return {}; }
 };
 using TextureHandle = std::shared_ptr<ITexture>;
 

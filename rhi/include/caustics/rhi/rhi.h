@@ -6,6 +6,7 @@
 #include "caustics/rhi/device.h"
 #include "caustics/rhi/format.h"
 #include "caustics/rhi/log.h"
+#include "caustics/rhi/native_object.h"
 #include "caustics/rhi/pipeline.h"
 #include "caustics/rhi/resource_state.h"
 #include "caustics/rhi/resources.h"

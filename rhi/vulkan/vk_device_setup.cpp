@@ -1,0 +1,82 @@
+#include "vk_device_setup.h"
+
+#include <algorithm>
+#include <string>
+
+namespace caustics::rhi::vulkan {
+
+Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts,
+                         PFN_vkGetDeviceProcAddr getDeviceProcAddr) {
+    auto load = [&](const char* name) { return getDeviceProcAddr(context.device, name); };
+    vkGetPhysicalDeviceMemoryProperties(context.physicalDevice, &context.memoryProperties);
+
+    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    props.pNext = &driver;
+    if (parts.accelStruct) {
+        context.accelStructProperties.pNext = driver.pNext;
+        driver.pNext = &context.accelStructProperties;
+    }
+    if (parts.rayTracingPipeline) {
+        context.rayTracingProperties.pNext = driver.pNext;
+        driver.pNext = &context.rayTracingProperties;
+    }
+    vkGetPhysicalDeviceProperties2(context.physicalDevice, &props);
+    context.rayTracingProperties.pNext = nullptr;
+    context.accelStructProperties.pNext = nullptr;
+    context.properties = props.properties;
+
+    Capabilities& caps = context.capabilities;
+    caps.adapterName = props.properties.deviceName;
+    caps.driverName = std::string(driver.driverName) + " " + driver.driverInfo;
+    caps.accelerationStructure = parts.accelStruct;
+    caps.rayTracingPipeline = parts.rayTracingPipeline;
+    caps.rayQuery = parts.rayQuery;
+    caps.shaderFloatAtomicAdd = parts.floatAtomicAdd;
+    if (parts.rayTracingPipeline) {
+        const auto& rp = context.rayTracingProperties;
+        caps.shaderGroupHandleSize = rp.shaderGroupHandleSize;
+        caps.shaderGroupHandleAlignment = rp.shaderGroupHandleAlignment;
+        caps.shaderGroupBaseAlignment = rp.shaderGroupBaseAlignment;
+        caps.maxShaderGroupStride = rp.maxShaderGroupStride;
+        caps.maxRayRecursionDepth = rp.maxRayRecursionDepth;
+    }
+    if (parts.accelStruct) {
+        caps.maxInstanceCount = uint32_t(std::min<uint64_t>(context.accelStructProperties.maxInstanceCount, UINT32_MAX));
+        caps.minAccelStructScratchAlignment = context.accelStructProperties.minAccelerationStructureScratchOffsetAlignment;
+    }
+    caps.timestampPeriodNs = props.properties.limits.timestampPeriod;
+
+    VulkanDispatch& fn = context.fn;
+    fn.vkCmdBeginRendering = reinterpret_cast<PFN_vkCmdBeginRendering>(load("vkCmdBeginRendering"));
+    fn.vkCmdEndRendering = reinterpret_cast<PFN_vkCmdEndRendering>(load("vkCmdEndRendering"));
+    fn.vkCmdPipelineBarrier2 = reinterpret_cast<PFN_vkCmdPipelineBarrier2>(load("vkCmdPipelineBarrier2"));
+    if (parts.accelStruct) {
+#define CAUSTICS_LOAD(name) fn.name = reinterpret_cast<PFN_##name>(load(#name))
+        CAUSTICS_LOAD(vkCreateAccelerationStructureKHR);
+        CAUSTICS_LOAD(vkDestroyAccelerationStructureKHR);
+        CAUSTICS_LOAD(vkGetAccelerationStructureBuildSizesKHR);
+        CAUSTICS_LOAD(vkCmdBuildAccelerationStructuresKHR);
+        CAUSTICS_LOAD(vkGetAccelerationStructureDeviceAddressKHR);
+        CAUSTICS_LOAD(vkCmdWriteAccelerationStructuresPropertiesKHR);
+        CAUSTICS_LOAD(vkCmdCopyAccelerationStructureKHR);
+    }
+    if (parts.rayTracingPipeline) {
+        CAUSTICS_LOAD(vkCreateRayTracingPipelinesKHR);
+        CAUSTICS_LOAD(vkGetRayTracingShaderGroupHandlesKHR);
+        CAUSTICS_LOAD(vkCmdTraceRaysKHR);
+#undef CAUSTICS_LOAD
+    }
+
+    VkSemaphoreTypeCreateInfo type{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
+    type.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
+    type.initialValue = 0;
+    VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    semaphore.pNext = &type;
+    VkResult r = vkCreateSemaphore(context.device, &semaphore, nullptr, &context.timeline);
+    if (r != VK_SUCCESS) return vkError(r, "vkCreateSemaphore (timeline)");
+    context.setName(VK_OBJECT_TYPE_SEMAPHORE, context.timeline, "device fence");
+    return okStatus();
+}
+
+}  // namespace caustics::rhi::vulkan

@@ -1,0 +1,22 @@
+#pragma once
+// What every Vulkan device needs once a VkDevice exists, whether this backend created it
+// (vk_physical_device.cpp) or a host engine did (vk_device_wrap.cpp): properties, capabilities,
+// extension entry points and the timeline semaphore that serves as the device fence.
+#include "vk_context.h"
+
+namespace caustics::rhi::vulkan {
+
+// Which optional parts of the device are enabled (extension and feature both on).
+struct EnabledDeviceParts {
+    bool accelStruct = false;
+    bool rayTracingPipeline = false;
+    bool rayQuery = false;
+    bool floatAtomicAdd = false;   // buffer and image float32 atomicAdd
+};
+
+// Needs context.physicalDevice, device and queue set. `getDeviceProcAddr` loads the entry points:
+// the loader's for our own device, the host's (through its vkGetInstanceProcAddr) for a wrapped one.
+Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts,
+                         PFN_vkGetDeviceProcAddr getDeviceProcAddr);
+
+}  // namespace caustics::rhi::vulkan
