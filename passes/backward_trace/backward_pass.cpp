@@ -25,13 +25,26 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
                               rg::Access::StorageWrite);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
         uint64_t blas = res.sphereBlas->deviceAddress();
+        // Mirrors the push block of shaders/vulkan/backward_trace/backward.rgen.
         struct Push {
             uint32_t policy;
             float scale, worldRadius;
-            uint32_t maxDepth, frame, blasLo, blasHi, pad;
-        } push{s.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint ? 0u : 1u, s.sphereRadiusScale, s.sphereWorldRadius,
-               s.maxSpecularDepth, f.in->frameIndex * 0x9E3779B9u + s.seed, uint32_t(blas), uint32_t(blas >> 32), 0};
-        static_assert(sizeof(Push) == 32);
+            uint32_t maxDepth, frame, blasLo, blasHi;
+            float minMagnification, maxMagnification, minRadius, maxRadius;
+            uint32_t pad;
+        } push{s.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint ? 0u : 1u,
+               s.sphereRadiusScale,
+               s.sphereWorldRadius,
+               s.maxSpecularDepth,
+               f.in->frameIndex * 0x9E3779B9u + s.seed,
+               uint32_t(blas),
+               uint32_t(blas >> 32),
+               s.sphereMinMagnification,
+               s.sphereMaxMagnification,
+               s.sphereMinRadius,
+               s.sphereMaxRadius,
+               0};
+        static_assert(sizeof(Push) == 48);
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {

@@ -45,7 +45,7 @@ Status sceneTraceState(rhi::IDevice& d, const char* rayGen, const rhi::BindingLa
     desc.maxAttributeBytes = 8;
     desc.maxRecursionDepth = 1;  // the specular chain is iterated in the raygen shader
     desc.globalBindings.layouts = {scene, pass};
-    desc.globalBindings.pushConstantBytes = 32;
+    desc.globalBindings.pushConstantBytes = 48;  // the larger push block: backward.rgen (forward: 32)
     desc.debugName = rayGen;
     CAUSTICS_TRY(so, d.createStateObject(desc));
     CAUSTICS_TRY(table, d.createShaderTable(rhi::ShaderTableDesc{so}.setRayGen("rayGen").addMiss("miss").addHitGroup("hit")));

@@ -27,6 +27,14 @@ Status CausticsSettings::validate() const {
         return outOfRange("sphereRadiusScale", sphereRadiusScale, 1e-6f, 64.0f);
     if (!std::isfinite(sphereWorldRadius) || sphereWorldRadius <= 0.0f || sphereWorldRadius > 1e3f)
         return outOfRange("sphereWorldRadius", sphereWorldRadius, 1e-6f, 1e3f);
+    if (!std::isfinite(sphereMinMagnification) || sphereMinMagnification <= 0.0f || sphereMinMagnification > 1.0f)
+        return outOfRange("sphereMinMagnification", sphereMinMagnification, 1e-6f, 1.0f);
+    if (!std::isfinite(sphereMaxMagnification) || sphereMaxMagnification < 1.0f || sphereMaxMagnification > 1e3f)
+        return outOfRange("sphereMaxMagnification", sphereMaxMagnification, 1.0f, 1e3f);
+    if (!std::isfinite(sphereMinRadius) || sphereMinRadius <= 0.0f || sphereMinRadius > 1e3f)
+        return outOfRange("sphereMinRadius", sphereMinRadius, 1e-6f, 1e3f);
+    if (!std::isfinite(sphereMaxRadius) || sphereMaxRadius < sphereMinRadius || sphereMaxRadius > 1e3f)
+        return outOfRange("sphereMaxRadius", sphereMaxRadius, sphereMinRadius, 1e3f);
     if (!std::isfinite(temporalAlpha) || temporalAlpha <= 0.0f || temporalAlpha > 1.0f)
         return outOfRange("temporalAlpha", temporalAlpha, 1e-6f, 1.0f);
     if (atrousIterations > 8) return outOfRange("atrousIterations", atrousIterations, 0u, 8u);

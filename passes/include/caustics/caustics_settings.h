@@ -11,8 +11,10 @@ namespace caustics {
 
 // How big the integration sphere of a backward (second-type) hit is.
 enum class SphereRadiusPolicy : uint8_t {
-    // radius = scale * (world size of one camera pixel at the hit, following the path length through the
-    // specular chain): the gather footprint stays about `scale` pixels wide on screen. Default.
+    // radius = scale * sqrt(area of the pixel's footprint on the receiver), the footprint propagated
+    // through the specular chain with ray differentials (Igehy 1999), so a lens's magnification counts;
+    // the footprint width is clamped to [min, max]Magnification x the unfolded width (path length x
+    // pixel angle), the radius to [sphereMinRadius, sphereMaxRadius]. docs/caustics.md. Default.
     PixelFootprint,
     // radius = worldRadius metres everywhere.
     FixedWorld,
@@ -34,8 +36,15 @@ struct CausticsSettings {
     bool russianRoulette = true;        // after the second event, by path throughput
     bool secondType = true;             // caustics seen through specular objects
     SphereRadiusPolicy sphereRadiusPolicy = SphereRadiusPolicy::PixelFootprint;
-    float sphereRadiusScale = 2.0f;     // PixelFootprint: radius in camera pixels
+    float sphereRadiusScale = 2.0f;     // PixelFootprint: radius in footprint widths (camera pixels)
     float sphereWorldRadius = 0.01f;    // FixedWorld: metres
+    // PixelFootprint clamps. Magnification: footprint width / unfolded width; ray differentials blow
+    // up at folds of the camera path and at grazing receivers. Radii in metres. Both policies keep
+    // every disk on its side of walls (tangent-plane probes) and the radius >= sphereMinRadius.
+    float sphereMinMagnification = 1.0f / 64.0f;
+    float sphereMaxMagnification = 16.0f;
+    float sphereMinRadius = 1.0e-4f;
+    float sphereMaxRadius = 0.25f;
     uint32_t maxStoredHits = 1u << 20;  // forward diffuse hits kept for the second-type gather
     bool filter = true;                 // temporal + a-trous spatial filter (the paper measured with it off)
     float temporalAlpha = 0.1f;         // weight of the new frame in the temporal accumulation

@@ -1,12 +1,15 @@
 // Backward pass (paper 3.3, Figure 5; mirror of shaders/vulkan/backward_trace/backward.rgen): from
 // every camera pixel whose G-buffer surface is specular, trace the specular chain to the first
 // diffuse hit; that hit becomes an integration sphere and this pixel's sphere TLAS instance is written
-// (unused pixels: mask 0).
+// (unused pixels: mask 0). The pixel's ray differentials (Igehy 1999) follow the chain, so the
+// sphere's radius is the pixel's real footprint on the receiver (docs/caustics.md).
 #include "scene/scene.hlsli"
 #include "scene/camera.hlsli"
+#include "common/gather_disk.h"
 #include "common/rng.h"
 #include "common/volume.h"
 #include "forward_trace/caustic_hit.hlsli"
+#include "backward_trace/surface_derivatives.hlsli"
 
 struct CameraBlock { CameraConstants camera; };
 ConstantBuffer<CameraBlock> cameraBlock : register(b0, space1);
@@ -24,6 +27,10 @@ struct Push {
     uint frame;
     uint blasLo;
     uint blasHi;
+    float minMagnification;   // footprint width clamp, relative to the unfolded pixel width
+    float maxMagnification;
+    float minRadius;          // metres
+    float maxRadius;          // metres
     uint pad;
 };
 ConstantBuffer<Push> pc : register(b0, space999);
@@ -50,6 +57,37 @@ void writeEmpty(uint pixel) {
     writeInstance(pixel, (float3)0.0f, 0.0f, 0u);     // mask 0: never hit
 }
 
+TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
+    TracePayload payload;
+    payload.barycentrics = (float2)0.0f;
+    payload.instance = 0u;
+    payload.primitive = 0u;
+    payload.t = -1.0f;
+    RayDesc ray;
+    ray.Origin = origin;
+    ray.TMin = tMin;
+    ray.Direction = dir;
+    ray.TMax = tMax;
+    TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 0, 0, ray, payload);
+    return payload;
+}
+
+// Shrinks `radius` so the disk at x (receiver normal n facing the camera path) stays on this side of
+// any wall (as clampRadiusAtWalls in backward.rgen).
+float clampRadiusAtWalls(float3 x, float3 n, float radius) {
+    float3 t = normalize(abs(n.x) < 0.9f ? cross(n, float3(1.0f, 0.0f, 0.0f)) : cross(n, float3(0.0f, 1.0f, 0.0f)));
+    float3 b = cross(n, t);
+    float3 origin = x + n * max(kGatherDiskThickness * radius, rayEpsilon(x));
+    float reach = radius / kWallProbeCosHalfStep;
+    float nearest = reach;
+    for (uint k = 0u; k < kWallProbeCount; ++k) {
+        float phi = kTwoPi * float(k) / float(kWallProbeCount);
+        TracePayload probe = traceScene(origin, 0.0f, cos(phi) * t + sin(phi) * b, reach);
+        if (probe.t >= 0.0f) nearest = min(nearest, probe.t);
+    }
+    return min(radius, kWallProbeCosHalfStep * nearest);
+}
+
 [shader("raygeneration")]
 void main() {
     CameraConstants camera = cameraBlock.camera;
@@ -61,29 +99,23 @@ void main() {
     Rng rng = rngCreate(pixel, 0x5eedu, 1u, pc.frame);
     PinholeCamera cam = cameraPinhole(camera);
     float3 origin = cam.eye;
-    float3 dir = cameraRayDirection(cam, float2(p) + 0.5f);
+    // A jittered position inside the pixel: accumulated frames converge to the pixel's mean.
+    float2 pixelPosition = float2(p) + rngNextFloat2(rng);
+    float3 dir = cameraRayDirection(cam, pixelPosition);
+    RayDifferential rd = pinholeRayDifferential(cam, pixelPosition);
     float3 throughput = (float3)1.0f;
     float3 sigma = (float3)0.0f;
     float pathLength = 0.0f;
     uint events = 0u;
     for (uint vertex = 0u; vertex <= pc.maxDepth + 1u; ++vertex) {
-        TracePayload payload;
-        payload.barycentrics = (float2)0.0f;
-        payload.instance = 0u;
-        payload.primitive = 0u;
-        payload.t = -1.0f;
-        RayDesc ray;
-        ray.Origin = origin;
-        ray.TMin = vertex == 0u ? camera.clip.x : 0.0f;
-        ray.Direction = dir;
-        ray.TMax = 1.0e30f;
-        TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 0, 0, ray, payload);
+        TracePayload payload = traceScene(origin, vertex == 0u ? camera.clip.x : 0.0f, dir, 1.0e30f);
         if (payload.t < 0.0f) break;
         pathLength += payload.t;
         if (any(sigma != (float3)0.0f)) throughput *= beerLambert(sigma, payload.t);
         SurfaceHit h = sceneSurfaceHit(payload.instance, payload.primitive, payload.barycentrics);
         float3 x = origin + payload.t * dir;
         float3 ng = dot(h.shadingNormal, h.geometricNormal) < 0.0f ? -h.geometricNormal : h.geometricNormal;
+        rd = transferRayDifferential(rd, dir, payload.t, h.geometricNormal);
         if (sceneMaterialIsSpecular(h.material)) {
             if (events >= pc.maxDepth) break;
             SpecularEvent ev = sampleSpecularEvent(dir, h.shadingNormal, h.optics, rngNextFloat3(rng), kTransportRadiance);
@@ -91,6 +123,10 @@ void main() {
             if (ev.kind != kEventDiffuse) {
                 ++events;
                 throughput *= ev.weight;
+                float3 dNdx, dNdy;
+                shadingNormalDerivatives(sceneSurfaceDerivatives(payload.instance, payload.primitive, payload.barycentrics), rd,
+                                         dNdx, dNdy);
+                rd = scatterRayDifferential(rd, dir, ev, h.shadingNormal, dNdx, dNdy, h.optics);
                 dir = ev.direction;
                 sigma = ev.insideMedium ? volumeSigmaA(h.material.attenuationColor, h.material.attenuationDistance)
                                         : (float3)0.0f;
@@ -99,8 +135,18 @@ void main() {
             }
         }
         if (events == 0u) break;
-        float radius = pc.radiusPolicy == 0u ? pc.radiusScale * pathLength * sqrt(pinholePixelArea(cam)) : pc.worldRadius;
         float3 nFacing = dot(h.shadingNormal, dir) < 0.0f ? h.shadingNormal : -h.shadingNormal;
+        float radius = pc.worldRadius;
+        if (pc.radiusPolicy == 0u) {
+            GatherRadiusLimits limits;
+            limits.scale = pc.radiusScale;
+            limits.minMagnification = pc.minMagnification;
+            limits.maxMagnification = pc.maxMagnification;
+            limits.minRadius = pc.minRadius;
+            limits.maxRadius = pc.maxRadius;
+            radius = gatherDiskRadius(rayFootprintArea(rd), pathLength * sqrt(pinholePixelArea(cam)), limits);
+        }
+        radius = max(clampRadiusAtWalls(x, nFacing, radius), min(pc.minRadius, radius));
         writeSphere(pixel, x, radius, throughput, h.objectId, nFacing);
         writeInstance(pixel, x, radius, 0xFFu);
         stats.InterlockedAdd(4u * kStatSpheres, 1u);

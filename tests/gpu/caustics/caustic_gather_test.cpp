@@ -1,4 +1,4 @@
-// Second-type gather (paper 3.3) against a CPU brute force over the same stored hits and spheres,
+// Second-type gather (paper 3.3) against a CPU brute force over the same stored hits and gather disks,
 // and the bounded hit buffer's overflow accounting.
 #include <gtest/gtest.h>
 
@@ -7,6 +7,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "caustic_harness.h"
+#include "common/gather_disk.h"
 #include "caustic_test_scene.h"
 #include "common/bsdf.h"
 #include "gpu_test.h"
@@ -36,10 +37,9 @@ TEST_F(CausticGather, SecondTypeEqualsCpuBruteForceGatherOnTheSameHitsAndSpheres
     for (const CausticSphere& s : r.spheres) {
         if (s.radius <= 0.0f) continue;
         for (const CausticHit& h : r.hits) {
-            glm::vec3 d = h.position - s.centre;
-            // Same float expression as sphere.rint; points within 1e-6 of the boundary could round
-            // either way, and are rare enough (measure zero) not to matter at this tolerance.
-            if (!(glm::dot(d, d) < s.radius * s.radius)) continue;
+            // The disk test sphere.rint evaluates (common/gather_disk.h); points within 1e-6 of the
+            // boundary could round either way, and are rare enough (measure zero) not to matter here.
+            if (!shader::insideGatherDisk(h.position, s.centre, s.normal, s.radius)) continue;
             if (h.objectId != s.objectId || glm::dot(h.normal, s.normal) <= 0.0f) continue;
             expected[s.pixel] += glm::dvec3(reflectedFlux(h, s.normal) * s.transmittance) / (3.14159265358979 * s.radius * s.radius);
             ++pairs;

@@ -12,6 +12,8 @@
 #include "common/camera.h"
 #include "common/emission.h"
 #include "common/bsdf.h"
+#include "common/ray_differential.h"
+#include "common/gather_disk.h"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) buffer Out { float4 values[]; };
@@ -45,5 +47,17 @@ void main() {
     BrdfMaterial brdf = makeBrdfMaterial(splat3(0.5f), u.x, u.y, 0.0f, gltfDielectricF0(1.0f, 1.5f));
     c += evalGltfBrdf(brdf, onb.n, dir, normalize(float3(0.0f, 0.2f, 1.0f))) +
          evalGltfBrdf(lambertOnlyBrdfMaterial(splat3(1.0f)), onb.n, onb.n, onb.n) + receiverBrdf(c, 0.0f, 1.0f, onb.n, onb.n, onb.n);
-    values[id] = float4(c, f + w + e + (ok ? 1.0f : 0.0f) + ggxD(0.9f, 0.1f));
+    RayDifferential rd = pinholeRayDifferential(cam, proj.pixel);
+    rd = transferRayDifferential(rd, dir, 1.0f, onb.n);
+    float3 dN = shadingNormalDerivative(float3(1.0f, 0.0f, 0.0f), float3(0.0f, 0.0f, 1.0f), u, dir, onb.n, rd.dPdx);
+    rd = scatterRayDifferential(reflectRayDifferential(rd, dir, onb.n, dN, dN), dir, ev, onb.n, dN, dN, mat);
+    rd = refractRayDifferential(rd, dir, t, onb.n, 0.7f, dN, dN);
+    GatherRadiusLimits limits;
+    limits.scale = 2.0f;
+    limits.minMagnification = 0.1f;
+    limits.maxMagnification = 10.0f;
+    limits.minRadius = 1e-4f;
+    limits.maxRadius = 1.0f;
+    float g = gatherDiskRadius(rayFootprintArea(rd), 0.01f, limits) + (insideGatherDisk(dir, t, onb.n, 0.5f) ? 1.0f : 0.0f);
+    values[id] = float4(c, f + w + e + g + (ok ? 1.0f : 0.0f) + ggxD(0.9f, 0.1f));
 }

@@ -1,0 +1,53 @@
+#ifndef CAUSTICS_COMMON_GATHER_DISK_H
+#define CAUSTICS_COMMON_GATHER_DISK_H
+// The second-type gather region (paper 3.3): a disk on the diffuse receiver, centred where the pixel's
+// camera path lands, radius from the pixel's footprint there (common/ray_differential.h) and clamped;
+// docs/caustics.md "Second-type footprint" and docs/physics.md "Second-type density estimate".
+#include "common/lang.h"
+
+CAUSTICS_SHARED_BEGIN
+
+// Half-thickness of the disk relative to its radius: a hit counts when its distance to the tangent
+// plane is below kGatherDiskThickness * r. A receiver of curvature radius Rc leaves the tangent plane
+// by r^2 / (2 Rc) at the disk's rim, so curved receivers down to Rc = 2 r keep their whole disk.
+CAUSTICS_CONST float kGatherDiskThickness = 0.25f;
+
+// Wall probes: rays in the tangent plane at this many evenly spaced azimuths find the nearest
+// occluder; the radius shrinks to cos(pi / kWallProbeCount) times that distance, which keeps the disk
+// on this side of any planar wall whatever the wall's orientation.
+CAUSTICS_CONST uint kWallProbeCount = 8u;
+CAUSTICS_CONST float kWallProbeCosHalfStep = 0.923879532511287f;  // cos(pi / 8)
+
+struct GatherRadiusLimits {
+    float scale;             // CausticsSettings::sphereRadiusScale: radius in footprint widths
+    float minMagnification;  // footprint width clamp relative to the unfolded pixel width
+    float maxMagnification;
+    float minRadius;         // metres
+    float maxRadius;         // metres
+};
+
+// Radius of the gather disk for a pixel whose footprint parallelogram on the receiver has area
+// `footprintArea` (m^2) and whose unfolded width (path length x pixel angle, the footprint without
+// the specular chain's magnification) is `unfoldedWidth` (m). The width sqrt(area) is clamped to
+// [minMagnification, maxMagnification] x unfoldedWidth (ray differentials blow up at folds of the
+// camera path and at grazing incidence), scaled, then clamped to [minRadius, maxRadius].
+CAUSTICS_FN float gatherDiskRadius(float footprintArea, float unfoldedWidth, GatherRadiusLimits l) {
+    float width = sqrt(max(footprintArea, 0.0f));
+    if (!(width == width)) width = unfoldedWidth;  // NaN from a degenerate differential
+    width = clamp(width, l.minMagnification * unfoldedWidth, l.maxMagnification * unfoldedWidth);
+    return clamp(l.scale * width, l.minRadius, l.maxRadius);
+}
+
+// True when the stored forward hit at p lies in the gather disk (centre c, unit receiver normal n on
+// the side the camera path arrived from, radius r): inside the sphere of radius r and within the
+// disk's thickness of the tangent plane. The sphere part is the expression the sphere TLAS's
+// intersection shader evaluates; the plane part stops hits on other sheets of the same object.
+CAUSTICS_FN bool insideGatherDisk(float3 p, float3 c, float3 n, float r) {
+    float3 d = p - c;
+    float h = dot(d, n);
+    return dot(d, d) < r * r && abs(h) < kGatherDiskThickness * r;
+}
+
+CAUSTICS_SHARED_END
+
+#endif  // CAUSTICS_COMMON_GATHER_DISK_H
