@@ -42,6 +42,30 @@ bool updateGoldenRequested() {
     return update && std::string(update) == "1";
 }
 
+RgbImage boxDownsample(const RgbImage& image, uint32_t factor) {
+    RgbImage out{(image.width + factor - 1) / factor, (image.height + factor - 1) / factor, {}};
+    out.rgb.assign(size_t(out.width) * out.height * 3, 0.0f);
+    std::vector<uint32_t> counts(size_t(out.width) * out.height, 0);
+    for (uint32_t y = 0; y < image.height; ++y)
+        for (uint32_t x = 0; x < image.width; ++x) {
+            size_t o = size_t(y / factor) * out.width + x / factor;
+            ++counts[o];
+            for (int c = 0; c < 3; ++c) out.rgb[3 * o + c] += image.rgb[3 * (size_t(y) * image.width + x) + c];
+        }
+    for (size_t o = 0; o < counts.size(); ++o)
+        for (int c = 0; c < 3; ++c) out.rgb[3 * o + c] /= float(std::max(counts[o], 1u));
+    return out;
+}
+
+double relativeL1(const RgbImage& actual, const RgbImage& golden) {
+    double diff = 0.0, sum = 0.0;
+    for (size_t i = 0; i < actual.rgb.size(); ++i) {
+        diff += std::abs(double(actual.rgb[i]) - double(golden.rgb[i]));
+        sum += std::abs(double(golden.rgb[i]));
+    }
+    return diff / std::max(sum, 1e-30);
+}
+
 ImageDiff compareImages(const RgbImage& actual, const RgbImage& golden, double pixelRelative, double pixelAbsolute) {
     ImageDiff d;
     d.absoluteDifference = RgbImage{actual.width, actual.height, std::vector<float>(actual.rgb.size())};

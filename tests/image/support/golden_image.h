@@ -29,6 +29,14 @@ struct ImageDiff {
     RgbImage absoluteDifference;  // |a - g| per channel
 };
 
+// Mean over factor x factor blocks (edges: the partial blocks' own means). Caustic images are
+// sparse photon splats; comparing block means measures the light where it lands without letting a
+// single bright splat dominate.
+RgbImage boxDownsample(const RgbImage& image, uint32_t factor);
+
+// sum |a - g| / sum |g| over all channels (equal sizes).
+double relativeL1(const RgbImage& actual, const RgbImage& golden);
+
 // Requires equal sizes (the caller checks).
 ImageDiff compareImages(const RgbImage& actual, const RgbImage& golden, double pixelRelative, double pixelAbsolute);
 
