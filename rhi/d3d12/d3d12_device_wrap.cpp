@@ -3,18 +3,11 @@
 // taken; the module creates only its fence, descriptor heaps and its own resources.
 #include "caustics/rhi/d3d12_interop.h"
 #include "d3d12_device.h"
+#include "host_objects.h"
 
 namespace caustics::rhi {
 namespace d3d12 {
 namespace {
-
-template <typename T>
-ComPtr<T> holdReference(T* object) {
-    ComPtr<T> held;
-    object->AddRef();
-    *held.put() = object;
-    return held;
-}
 
 // The highest shader model the device takes: CheckFeatureSupport fails for models newer than the
 // runtime knows, so ask from high to low (D3D12_FEATURE_DATA_SHADER_MODEL docs).
@@ -66,12 +59,7 @@ Result<DeviceHandle> wrapD3D12Device(const D3D12DeviceImport& desc) {
     if (!desc.device || !desc.queue)
         return makeError("d3d12: wrapD3D12Device '" + desc.debugName + "': D3D12DeviceImport lacks " +
                          (desc.device ? "queue" : desc.queue ? "device" : "device, queue"));
-    D3D12_COMMAND_QUEUE_DESC queueDesc;
-#if defined(_MSC_VER) || !defined(_WIN32)
-    queueDesc = desc.queue->GetDesc();
-#else
-    desc.queue->GetDesc(&queueDesc);   // MinGW ABI of struct returns (DirectX-Headers' d3d12.h)
-#endif
+    const auto queueDesc = d3d12::describe<D3D12_COMMAND_QUEUE_DESC>(desc.queue);
     if (queueDesc.Type != D3D12_COMMAND_LIST_TYPE_DIRECT)
         return makeError("d3d12: wrapD3D12Device '" + desc.debugName + "': the queue is not a DIRECT queue");
     D3D12_FEATURE_DATA_D3D12_OPTIONS5 o5{};

@@ -7,6 +7,7 @@
 #include "d3d12_device.h"
 #include "d3d12_objects.h"
 #include "format_translation.h"
+#include "host_objects.h"
 
 namespace caustics::rhi {
 namespace {
@@ -17,23 +18,7 @@ Result<d3d12::Device*> d3d12Device(IDevice& device, const char* call, const std:
     return static_cast<d3d12::Device*>(&device);
 }
 
-D3D12_RESOURCE_DESC resourceDesc(ID3D12Resource* resource) {
-#if defined(_MSC_VER) || !defined(_WIN32)
-    return resource->GetDesc();
-#else
-    D3D12_RESOURCE_DESC desc;
-    resource->GetDesc(&desc);   // MinGW ABI of struct returns (DirectX-Headers' d3d12.h)
-    return desc;
-#endif
-}
-
-template <typename T>
-d3d12::ComPtr<T> holdReference(T* object) {
-    d3d12::ComPtr<T> held;
-    object->AddRef();
-    *held.put() = object;
-    return held;
-}
+D3D12_RESOURCE_DESC resourceDesc(ID3D12Resource* resource) { return d3d12::describe<D3D12_RESOURCE_DESC>(resource); }
 
 }  // namespace
 
@@ -56,7 +41,7 @@ Result<TextureHandle> importD3D12Texture(IDevice& device, const D3D12TextureImpo
     }
     auto texture = std::make_shared<d3d12::Texture>();
     texture->desc_ = td;
-    texture->resource = holdReference(desc.resource);
+    texture->resource = d3d12::holdReference(desc.resource);
     texture->state = D3D12_RESOURCE_STATES(desc.currentStates);
     return TextureHandle(texture);
 }
@@ -79,7 +64,7 @@ Result<BufferHandle> importD3D12Buffer(IDevice& device, const D3D12BufferImport&
     buffer->desc_.memory = MemoryType::DeviceLocal;
     buffer->desc_.structStride = desc.structStride;
     buffer->desc_.debugName = desc.debugName;
-    buffer->resource = holdReference(desc.resource);
+    buffer->resource = d3d12::holdReference(desc.resource);
     buffer->state = D3D12_RESOURCE_STATES(desc.currentStates);
     return BufferHandle(buffer);
 }
@@ -95,7 +80,7 @@ Result<AccelStructHandle> importD3D12AccelStruct(IDevice& device, const D3D12Acc
     auto as = std::make_shared<d3d12::AccelStruct>();
     as->desc_.isTopLevel = desc.isTopLevel;
     as->desc_.debugName = desc.debugName;
-    as->storage = holdReference(desc.storage);
+    as->storage = d3d12::holdReference(desc.storage);
     as->storageOffset = desc.offset;
     as->storageSize = resourceDesc(desc.storage).Width - desc.offset;
     return AccelStructHandle(as);
@@ -106,7 +91,7 @@ Result<CommandListHandle> wrapD3D12CommandList(IDevice& device, const D3D12Comma
     if (!desc.commandList) return makeError("d3d12: wrapD3D12CommandList '" + desc.debugName + "': commandList is null");
     auto list = std::make_shared<d3d12::CommandList>();
     list->device = dev;
-    list->list = holdReference(desc.commandList);
+    list->list = d3d12::holdReference(desc.commandList);
     list->timestampsAllowed = desc.allowTimestamps;
     CAUSTICS_CHECK(list->createDescriptorStorage(dev->d3d()));
     list->begin();   // no allocator: resets our rings and sets our shader-visible heaps on the host's list

@@ -57,7 +57,6 @@ std::shared_ptr<VulkanBuffer> VulkanBuffer::wrap(const ContextPtr& context, cons
     wrapped->buffer_ = buffer;
     wrapped->deviceAddress_ = deviceAddress;
     wrapped->ownsBuffer_ = false;
-    context->setName(VK_OBJECT_TYPE_BUFFER, buffer, desc.debugName);
     return wrapped;
 }
 

@@ -15,7 +15,6 @@ Result<CommandListHandle> wrapVulkanCommandBuffer(IDevice& device, const VulkanC
     if (desc.commandBuffer == VK_NULL_HANDLE)
         return makeError("wrapVulkanCommandBuffer '" + desc.debugName + "': commandBuffer is VK_NULL_HANDLE");
     auto& vk = static_cast<vulkan::VulkanDevice&>(device);
-    vk.context().setName(VK_OBJECT_TYPE_COMMAND_BUFFER, desc.commandBuffer, desc.debugName);
     return CommandListHandle(vulkan::VulkanCommandList::wrap(vk, desc.commandBuffer, desc.allowTimestamps));
 }
 

@@ -56,7 +56,6 @@ std::shared_ptr<VulkanTexture> VulkanTexture::wrap(const ContextPtr& context, co
     texture->image_ = image;
     texture->format_ = format;
     texture->ownsImage_ = false;
-    context->setName(VK_OBJECT_TYPE_IMAGE, image, desc.debugName);
     return texture;
 }
 
