@@ -128,6 +128,7 @@ Status Device::finishInit() {
     caps_.maxRayRecursionDepth = D3D12_RAYTRACING_MAX_DECLARABLE_TRACE_RECURSION_DEPTH;
     caps_.maxInstanceCount = D3D12_RAYTRACING_MAX_INSTANCES_PER_TOP_LEVEL_ACCELERATION_STRUCTURE;
     caps_.minAccelStructScratchAlignment = D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT;
+    caps_.maxTextureDimension2D = D3D12_REQ_TEXTURE2D_U_OR_V_DIMENSION;
 
     uint64_t frequency = 0;
     if (succeeded(queue_->GetTimestampFrequency(&frequency)) && frequency) caps_.timestampPeriodNs = 1e9 / double(frequency);

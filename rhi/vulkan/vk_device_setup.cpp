@@ -12,7 +12,9 @@ Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts
 
     VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-    props.pNext = &driver;
+    VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    props.pNext = &maintenance3;
+    maintenance3.pNext = &driver;
     if (parts.accelStruct) {
         context.accelStructProperties.pNext = driver.pNext;
         driver.pNext = &context.accelStructProperties;
@@ -46,6 +48,11 @@ Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts
         caps.minAccelStructScratchAlignment = context.accelStructProperties.minAccelerationStructureScratchOffsetAlignment;
     }
     caps.timestampPeriodNs = props.properties.limits.timestampPeriod;
+    caps.maxTextureDimension2D = props.properties.limits.maxImageDimension2D;
+    caps.maxAllocationBytes = maintenance3.maxMemoryAllocationSize;
+    for (uint32_t h = 0; h < context.memoryProperties.memoryHeapCount; ++h)
+        if (context.memoryProperties.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            caps.deviceMemoryBytes = std::max<uint64_t>(caps.deviceMemoryBytes, context.memoryProperties.memoryHeaps[h].size);
 
     VulkanDispatch& fn = context.fn;
     fn.vkCmdBeginRendering = reinterpret_cast<PFN_vkCmdBeginRendering>(load("vkCmdBeginRendering"));

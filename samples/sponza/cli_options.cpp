@@ -1,6 +1,7 @@
 #include "cli_options.h"
 
 #include <charconv>
+#include <initializer_list>
 #include <cmath>
 #include <sstream>
 
@@ -17,10 +18,14 @@ constexpr uint32_t kMaxFrames = 100000;
 Result<uint32_t> parseUint(const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
     uint32_t value = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    // from_chars reports a well-formed number too large for 32 bits separately from garbage.
+    if (ec == std::errc::result_out_of_range && end == text.data() + text.size())
+        return makeError(option + ": " + text + " is out of range " + range);
     if (ec != std::errc() || end != text.data() + text.size())
         return makeError(option + ": '" + text + "' is not a whole number");
     if (value < lo || value > hi)
-        return makeError(option + ": " + text + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        return makeError(option + ": " + text + " is out of range " + range);
     return value;
 }
 
@@ -37,7 +42,8 @@ Result<float> parseFloat(const std::string& option, const std::string& text, flo
     return value;
 }
 
-// "ex,ey,ez,tx,ty,tz,fov" (fov in degrees).
+// "ex,ey,ez,tx,ty,tz,fov[,ux,uy,uz]" (fov in degrees; the optional up vector must not be parallel to
+// the view direction).
 Result<CameraOverride> parseCamera(const std::string& text) {
     std::vector<float> values;
     std::stringstream stream(text);
@@ -47,8 +53,9 @@ Result<CameraOverride> parseCamera(const std::string& text) {
         if (!v) return v.error();
         values.push_back(*v);
     }
-    if (values.size() != 7)
-        return makeError("--camera: expected 7 comma-separated numbers eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_degrees");
+    if (values.size() != 7 && values.size() != 10)
+        return makeError("--camera: expected 7 or 10 comma-separated numbers "
+                         "eye_x,eye_y,eye_z,target_x,target_y,target_z,fov_degrees[,up_x,up_y,up_z]");
     CameraOverride camera;
     camera.eye = {values[0], values[1], values[2]};
     camera.target = {values[3], values[4], values[5]};
@@ -56,6 +63,13 @@ Result<CameraOverride> parseCamera(const std::string& text) {
     if (!(camera.verticalFovDegrees > 1.0f && camera.verticalFovDegrees < 179.0f))
         return makeError("--camera: the field of view must be within (1, 179) degrees");
     if (glm::length(camera.target - camera.eye) < 1e-6f) return makeError("--camera: eye and target coincide");
+    if (values.size() == 10) {
+        glm::vec3 up{values[7], values[8], values[9]};
+        glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+        if (glm::length(up) < 1e-6f || glm::length(glm::cross(forward, glm::normalize(up))) < 1e-3f)
+            return makeError("--camera: the up vector is zero or parallel to the view direction");
+        camera.up = glm::normalize(up);
+    }
     return camera;
 }
 
@@ -85,7 +99,8 @@ const char* cliUsage() {
            "  --sponza PATH           modified Sponza: load PATH and add the caustic objects to its atrium\n"
            "  --backend vulkan|d3d12  RHI backend (default vulkan)\n"
            "  --width N --height N    image size (default 512x384)\n"
-           "  --camera ex,ey,ez,tx,ty,tz,fov   eye, target and vertical field of view in degrees\n"
+           "  --camera ex,ey,ez,tx,ty,tz,fov[,ux,uy,uz]   eye, target, vertical field of view in degrees\n"
+           "                          and optional up vector (default +Y, or +Z when looking straight down/up)\n"
            "  --out FILE.png|FILE.exr output image (EXR keeps linear radiance)\n"
            "  --aov final|albedo|normal|depth|direct|caustics\n"
            "  --frames N              frames to render (temporal filter accumulates); with --window, close after N\n"
@@ -101,15 +116,49 @@ const char* cliUsage() {
            "  --reference             also render the CPU reference light tracer (to FILE.reference.exr)\n"
            "  --reference-photons N   photons per light for --reference\n"
            "  --validation            enable Vulkan validation layers\n"
-           "  --window                interactive window (GLFW)\n");
+           "  --window                interactive viewer (GLFW + Dear ImGui; README lists its controls)\n"
+           "  --script FILE           drive the viewer from FILE, one command per line (docs/viewer.md)\n");
     return usage.c_str();
 }
 
+namespace {
+
+// Options that take a value (here and in sample_controls.h); anything else that is not a flag is
+// unknown (checked before the value, so `--bogus` as the last argument is "unknown option", not
+// "missing value").
+bool takesValue(const std::string& a) {
+    SampleControls probe;
+    auto control = parseSampleControl(a, "", probe);   // an error or true: one of the sample controls
+    if (!control || *control) return true;
+    static const char* const kValueOptions[] = {
+        "--scene", "--sponza", "--backend", "--out", "--graph-dot", "--aov", "--camera", "--width", "--height",
+        "--frames", "--map-resolution", "--max-stored-hits", "--max-depth", "--rays-per-texel", "--exposure",
+        "--reference-photons", "--script"};
+    for (const char* known : kValueOptions)
+        if (a == known) return true;
+    return false;
+}
+
+Status checkOutputExtension(const char* option, const std::string& path, std::initializer_list<const char*> exts) {
+    if (path.empty()) return makeError(std::string(option) + ": the path is empty");
+    auto dot = path.rfind('.');
+    std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+    for (const char* e : exts)
+        if (ext == e) return okStatus();
+    std::string list;
+    for (const char* e : exts) list += (list.empty() ? "" : " or ") + std::string(e);
+    return makeError(std::string(option) + ": '" + path + "' must end in " + list);
+}
+
+}  // namespace
+
 Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
     CliOptions o;
+    bool outGiven = false, dotGiven = false;
     for (size_t i = 1; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto next = [&]() -> Result<std::string> {
+            if (!takesValue(a)) return makeError("unknown option '" + a + "' (see --help)");
             if (i + 1 >= args.size()) return makeError(a + ": missing value");
             return args[++i];
         };
@@ -129,8 +178,9 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
         else if (a == "--backend") {
             if (value != "vulkan" && value != "d3d12") return makeError("--backend: '" + value + "' is not vulkan or d3d12");
             o.backend = value;
-        } else if (a == "--out") o.outPath = value;
-        else if (a == "--graph-dot") o.graphDotPath = value;
+        } else if (a == "--out") { o.outPath = value; outGiven = true; }
+        else if (a == "--graph-dot") { o.graphDotPath = value; dotGiven = true; }
+        else if (a == "--script") o.scriptPath = value;
         else if (a == "--aov") { CAUSTICS_TRY(o.aov, parseAov(value)); }
         else if (a == "--camera") { CAUSTICS_TRY(o.camera, parseCamera(value)); }
         else if (a == "--width") { CAUSTICS_TRY(o.width, parseUint(a, value, 1, kMaxImageSide)); }
@@ -154,11 +204,9 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
 #undef CLI_VALUE
     }
     CAUSTICS_CHECK(validateSampleControls(o.controls, o.window, o.framesGiven));
-    if (!o.outPath.empty()) {
-        auto dot = o.outPath.rfind('.');
-        std::string ext = dot == std::string::npos ? "" : o.outPath.substr(dot);
-        if (ext != ".png" && ext != ".exr") return makeError("--out: '" + o.outPath + "' must end in .png or .exr");
-    }
+    if (outGiven) CAUSTICS_CHECK(checkOutputExtension("--out", o.outPath, {".png", ".exr"}));
+    if (dotGiven && o.graphDotPath.empty()) return makeError("--graph-dot: the path is empty");
+    if (!o.scriptPath.empty() && !o.window) return makeError("--script: needs --window (it drives the viewer)");
     return o;
 }
 

@@ -18,6 +18,7 @@ struct CameraOverride {
     glm::vec3 eye{0.0f};
     glm::vec3 target{0.0f};
     float verticalFovDegrees = 45.0f;
+    std::optional<glm::vec3> up;          // unit; absent: +Y, or a robust choice when looking along Y
 };
 
 struct CliOptions {
@@ -33,6 +34,7 @@ struct CliOptions {
     bool framesGiven = false;             // --window: close after --frames frames (scripted runs)
     std::string graphDotPath;
     bool window = false;
+    std::string scriptPath;               // --window --script FILE: per-frame commands (script.h)
     bool reference = false;               // also render the CPU reference light tracer
     uint32_t referencePhotons = 2'000'000;
     // Caustic settings (see CausticsSettings for meaning and defaults).

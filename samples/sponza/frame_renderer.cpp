@@ -51,13 +51,14 @@ Status FrameRenderer::render(const scene::Camera& camera, uint32_t frameIndex, b
     CAUSTICS_TRY(uint64_t fence, device_->submit(cmd_));
     CAUSTICS_CHECK(device_->waitForFence(fence));
     graph_.collectTimings(*device_);
-    if (out.causticStats.valid() && !warnedAboutStats_) {
-        std::vector<uint32_t> stats(kStatCount);
-        CAUSTICS_CHECK(device_->readBuffer(statsReadback_, stats.data(), kStatCount * 4));
-        for (const std::string& w : causticStatsWarnings(stats, module_->settings())) {
-            caustics::log(LogLevel::Warning, w);
-            warnedAboutStats_ = true;   // once per run, not every frame
-        }
+    stats_.assign(kStatCount, 0u);
+    if (out.causticStats.valid()) {
+        CAUSTICS_CHECK(device_->readBuffer(statsReadback_, stats_.data(), kStatCount * 4));
+        if (!warnedAboutStats_)
+            for (const std::string& w : causticStatsWarnings(stats_, module_->settings())) {
+                caustics::log(LogLevel::Warning, w);
+                warnedAboutStats_ = true;   // once per run, not every frame
+            }
     }
     if (readBack) {
         uint64_t pixels = uint64_t(images_.width) * images_.height;

@@ -25,6 +25,8 @@ public:
     // Renders one frame and waits for it; readBack copies the images to the host.
     Status render(const scene::Camera& camera, uint32_t frameIndex, bool readBack);
     const FrameImages& images() const { return images_; }
+    // The last frame's caustic statistics (uint32[kStatCount], caustic_passes.h); zeros when caustics are off.
+    const std::vector<uint32_t>& stats() const { return stats_; }
     rg::RenderGraph& graph() { return graph_; }
 
 private:
@@ -36,6 +38,7 @@ private:
     rhi::BufferHandle displayReadback_, hdrReadback_, statsReadback_;
     bool warnedAboutStats_ = false;
     FrameImages images_;
+    std::vector<uint32_t> stats_;
 };
 
 }  // namespace caustics::sample

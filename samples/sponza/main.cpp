@@ -3,21 +3,23 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "camera_setup.h"
 #include "caustics/caustics_module.h"
 #include "cli_options.h"
+#include "frame_budget.h"
 #include "frame_renderer.h"
 #include "image_file.h"
 #include "caustics/reference/reference_tracer.h"
 #include "caustics/rhi/rhi.h"
 #include "caustics/scene/gpu_scene.h"
+#include "output_paths.h"
+#include "scene_checks.h"
 #include "scene_source.h"
 #include "still_render.h"
-#include "window_app.h"
+#include "viewer_app.h"
 
 using namespace caustics;
 
@@ -57,6 +59,19 @@ CausticsSettings settingsFromOptions(const sample::CliOptions& o) {
     return s;
 }
 
+std::string referencePath(const sample::CliOptions& o) {
+    std::string stem = o.outPath.empty() ? "caustics" : o.outPath.substr(0, o.outPath.rfind('.'));
+    return stem + ".reference.exr";
+}
+
+// Every file the run will write is checked before the scene is loaded: a bad path costs nothing.
+Status checkOutputs(const sample::CliOptions& o) {
+    if (!o.outPath.empty()) CAUSTICS_CHECK(sample::checkWritable("--out", o.outPath));
+    if (!o.graphDotPath.empty()) CAUSTICS_CHECK(sample::checkWritable("--graph-dot", o.graphDotPath));
+    if (o.reference) CAUSTICS_CHECK(sample::checkWritable("--reference", referencePath(o)));
+    return okStatus();
+}
+
 // --reference: the CPU light tracer (engine/reference) renders the first-type caustics of the same
 // view with the same estimator, written beside --out as <stem>.reference.exr (linear cd/m^2).
 int writeReference(const sample::CliOptions& o, const scene::Scene& scene, const scene::Camera& camera) {
@@ -72,8 +87,7 @@ int writeReference(const sample::CliOptions& o, const scene::Scene& scene, const
     }
     sample::FloatImage out{image->width, image->height, 3, {}};
     for (const glm::vec3& p : image->pixels) out.pixels.insert(out.pixels.end(), {p.x, p.y, p.z});
-    std::string stem = o.outPath.empty() ? "caustics" : o.outPath.substr(0, o.outPath.rfind('.'));
-    std::string path = stem + ".reference.exr";
+    std::string path = referencePath(o);
     if (Status st = sample::writeImage(path, out); !st) {
         std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
         return 1;
@@ -95,12 +109,27 @@ void printTimings(const rg::RenderGraph& graph) {
 }
 
 int run(const sample::CliOptions& o) {
+    if (Status st = checkOutputs(o); !st) {
+        std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
+        return 1;
+    }
+    sample::Script script;   // checked whole before anything is loaded
+    if (!o.scriptPath.empty()) {
+        auto loaded = sample::loadScript(o.scriptPath);
+        if (!loaded) {
+            std::fprintf(stderr, "caustics-sponza: %s\n", loaded.message().c_str());
+            return 2;
+        }
+        script = std::move(*loaded);
+    }
     auto sceneResult = sample::loadSceneFromOptions(o);
     if (!sceneResult) {
         std::fprintf(stderr, "caustics-sponza: %s\n", sceneResult.message().c_str());
         return 1;
     }
-    const scene::Scene& scene = *sceneResult;
+    for (const std::string& w : sample::prepareSceneForRendering(*sceneResult))
+        std::fprintf(stderr, "caustics-sponza: warning: %s\n", w.c_str());
+    scene::Scene& scene = *sceneResult;
     std::printf("scene: %s%s (%zu instances, %zu lights)\n", scene.name.c_str(),
                 scene.isStandIn ? " [generated stand-in, not the real asset]" : "", scene.instances.size(),
                 scene.lights.size());
@@ -121,6 +150,10 @@ int run(const sample::CliOptions& o) {
     }
     std::printf("device: %s (%s)\n", (*device)->capabilities().adapterName.c_str(),
                 (*device)->capabilities().driverName.c_str());
+    if (Status st = sample::checkFrameFitsDevice((*device)->capabilities(), o.width, o.height, settingsFromOptions(o)); !st) {
+        std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
+        return 1;
+    }
     auto gpuScene = scene::GpuScene::create(**device, scene);
     if (!gpuScene) {
         std::fprintf(stderr, "caustics-sponza: %s\n", gpuScene.message().c_str());
@@ -131,7 +164,7 @@ int run(const sample::CliOptions& o) {
         std::fprintf(stderr, "caustics-sponza: %s\n", module.message().c_str());
         return 1;
     }
-    if (o.window) return sample::runWindow(*device, **module, scene, o);
+    if (o.window) return sample::runViewer(*device, scene, *gpuScene, *module, o, script);
 
     auto renderer = sample::FrameRenderer::create(*device, **module, o.width, o.height);
     if (!renderer) {
@@ -148,14 +181,13 @@ int run(const sample::CliOptions& o) {
         std::printf("accumulated %u unfiltered frames (seed %u)\n", o.controls.accumulate, o.controls.seed);
     printTimings((*renderer)->graph());
     if (!o.graphDotPath.empty()) {
-        std::ofstream dot(o.graphDotPath);
-        dot << (*renderer)->graph().printGraphviz();
+        if (Status st = sample::writeTextFile("--graph-dot", o.graphDotPath, (*renderer)->graph().printGraphviz()); !st) {
+            std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
+            return 1;
+        }
         std::printf("wrote %s\n", o.graphDotPath.c_str());
     }
     if (!o.outPath.empty()) {
-        std::error_code ec;
-        if (auto parent = std::filesystem::path(o.outPath).parent_path(); !parent.empty())
-            std::filesystem::create_directories(parent, ec);
         const sample::FrameImages& img = *still;
         Status st = okStatus();
         if (o.outPath.size() > 4 && o.outPath.substr(o.outPath.size() - 4) == ".exr") {

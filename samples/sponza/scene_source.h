@@ -9,7 +9,5 @@
 namespace caustics::sample {
 
 Result<scene::Scene> loadSceneFromOptions(const CliOptions& options);
-// The camera to render: the scene's first camera (or a default view of it), overridden by --camera.
-scene::Camera cameraFromOptions(const scene::Scene& scene, const CliOptions& options);
 
 }  // namespace caustics::sample

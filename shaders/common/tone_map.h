@@ -8,7 +8,13 @@
 
 CAUSTICS_SHARED_BEGIN
 
+// The fit is white (>= 0.999) from x = 60 on; clamping its input at 1e4 keeps x * x finite for any
+// radiance up to float's limit, so a 1e38 cd light (or inf from an RGBA16F overflow) shows white
+// instead of the black that inf / inf = NaN gave.
+CAUSTICS_CONST float kToneInputLimit = 1.0e4f;
+
 CAUSTICS_FN float3 acesFitted(float3 x) {
+    x = clamp(x, splat3(0.0f), splat3(kToneInputLimit));
     return saturate((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f));
 }
 

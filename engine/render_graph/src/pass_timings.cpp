@@ -26,6 +26,12 @@ std::optional<double> PassTimings::medianMs(std::string_view pass) const {
     return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
 }
 
+std::optional<double> PassTimings::latestMs(std::string_view pass) const {
+    auto it = samples_.find(pass);
+    if (it == samples_.end() || it->second.empty()) return std::nullopt;
+    return it->second.back();
+}
+
 uint32_t PassTimings::sampleCount(std::string_view pass) const {
     auto it = samples_.find(pass);
     return it == samples_.end() ? 0u : uint32_t(it->second.size());

@@ -1,10 +1,10 @@
 // glTF 2.0 import: file -> tinygltf::Model (inside a catch-all boundary) -> checked conversion.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <set>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -20,13 +20,6 @@ namespace caustics::scene {
 using namespace gltf;
 
 namespace {
-
-// Extensions whose absence of support would change the result; anything else in
-// extensionsRequired is refused (glTF 2.0 3.12).
-const std::set<std::string> kSupportedExtensions = {
-    "KHR_materials_transmission", "KHR_materials_ior",  "KHR_materials_volume",
-    "KHR_materials_specular",     "KHR_lights_punctual", "KHR_materials_emissive_strength",
-};
 
 struct ImageContext {
     const LoadOptions* options = nullptr;
@@ -83,6 +76,23 @@ void logLines(const std::string& path, const std::string& text) {
 
 bool finiteVec(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+std::string nodeLabel(const tinygltf::Node& node, size_t index) {
+    return "node " + std::to_string(index) + (node.name.empty() ? "" : " ('" + shortened(node.name, 64) + "')");
+}
+
+// Largest factor by which the upper 3x3 stretches a unit vector's axis (column norms).
+// Computed in double: a 1e30 scale squared overflows float.
+double maxAxisScale(const glm::mat4& m) {
+    double largest = 0.0;
+    for (int c = 0; c < 3; ++c)
+        largest = std::max(largest, std::sqrt(double(m[c][0]) * m[c][0] + double(m[c][1]) * m[c][1] + double(m[c][2]) * m[c][2]));
+    return largest;
+}
+
+// Beyond this a mesh of metre-sized features spans more than 1000 km: ray-triangle tests in float
+// lose all precision (the ray epsilon alone exceeds the objects in view), so the instance would vanish.
+constexpr double kMaxInstanceScale = 1e6;
+
 Result<glm::mat4> localTransform(const tinygltf::Node& node, size_t index) {
     glm::mat4 m(1.0f);
     std::string name = "node " + std::to_string(index);
@@ -120,11 +130,12 @@ private:
     std::vector<std::vector<uint32_t>> meshPrimitives_;   // glTF mesh -> scene meshes
     uint64_t triangles_ = 0, vertices_ = 0;
     int defaultMaterial_ = -1;
+    uint32_t skippedInstances_ = 0;
 };
 
 Status Importer::run(Scene& scene) {
     for (const std::string& ext : model_.extensionsRequired)
-        if (!kSupportedExtensions.count(ext)) return makeError("requires the unsupported extension '" + ext + "'");
+        if (!isSupportedExtension(ext)) return makeError("requires the unsupported extension '" + shortened(ext, 64) + "'");
     if (model_.meshes.empty()) return makeError("contains no meshes");
 
     for (size_t i = 0; i < model_.images.size(); ++i) {
@@ -314,7 +325,19 @@ Status Importer::convertNodes(Scene& scene) {
         const tinygltf::Node& node = model_.nodes[size_t(index)];
         CAUSTICS_TRY(glm::mat4 local, localTransform(node, size_t(index)));
         glm::mat4 world = parent * local;
-        if (node.mesh >= 0) {
+        for (int i = 0; i < 16; ++i)
+            if (!std::isfinite(glm::value_ptr(world)[i]))
+                return makeError(nodeLabel(node, size_t(index)) + " has a non-finite world transform (the scales and "
+                                 "translations of it and its parents multiply past the float range)");
+        bool hugeScale = node.mesh >= 0 && maxAxisScale(world) > kMaxInstanceScale;
+        if (hugeScale) {
+            char scale[32];
+            std::snprintf(scale, sizeof(scale), "%.3g", maxAxisScale(world));
+            warnings.push_back(nodeLabel(node, size_t(index)) + " scales its mesh by " + scale + " (more than " +
+                               "1e6): float ray tracing cannot represent it; the instance is skipped");
+            ++skippedInstances_;
+        }
+        if (node.mesh >= 0 && !hugeScale) {
             if (size_t(node.mesh) >= model_.meshes.size())
                 return makeError("node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
                                  std::to_string(model_.meshes.size()) + " meshes");
@@ -340,12 +363,17 @@ Status Importer::convertNodes(Scene& scene) {
                 return makeError("node " + std::to_string(index) + " refers to light " + std::to_string(light) + ", but the file has " +
                                  std::to_string(model_.lights.size()) + " lights");
             Light out;
-            std::string problem;
-            if (convertLight(model_.lights[size_t(light)], world, out, problem)) scene.lights.push_back(out);
-            else warnings.push_back("light " + std::to_string(light) + " " + problem + "; skipped");
+            std::string problem, repaired;
+            std::string label = "light " + std::to_string(light) +
+                                (model_.lights[size_t(light)].name.empty() ? "" : " ('" + shortened(model_.lights[size_t(light)].name, 64) + "')");
+            if (convertLight(model_.lights[size_t(light)], world, out, problem, repaired)) scene.lights.push_back(out);
+            else warnings.push_back(label + " " + problem + "; skipped");
+            if (!repaired.empty()) warnings.push_back(label + ": " + repaired);
         }
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
     }
+    if (scene.instances.empty() && skippedInstances_ > 0)
+        return makeError("every mesh instance was skipped (" + std::to_string(skippedInstances_) + "; see the warnings)");
     if (scene.instances.empty()) {
         // Meshes no scene uses: show each once at the origin rather than render nothing.
         warnings.push_back("no node instantiates a mesh; every mesh is placed once at the origin");
@@ -403,8 +431,13 @@ Result<Scene> loadUnguarded(const std::string& path, const LoadOptions& options)
         std::memcpy(&chunk, bytes.data() + 12, 4);
         jsonLength = std::min<size_t>(chunk, bytes.size() - 20);
     }
-    if (jsonBegin <= bytes.size() && jsonTooDeep(bytes.data() + jsonBegin, std::min(jsonLength, bytes.size() - jsonBegin)))
-        return makeError("invalid JSON: nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    if (binary) CAUSTICS_CHECK(preflightGlb(bytes));
+    if (jsonBegin <= bytes.size()) {
+        size_t available = std::min(jsonLength, bytes.size() - jsonBegin);
+        if (jsonTooDeep(bytes.data() + jsonBegin, available))
+            return makeError("invalid JSON: nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+        CAUSTICS_CHECK(preflightJson(bytes.data() + jsonBegin, available));
+    }
 
     tinygltf::TinyGLTF loader;
     ImageContext imageContext{&options, {}};
@@ -415,9 +448,9 @@ Result<Scene> loadUnguarded(const std::string& path, const LoadOptions& options)
     bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
                      : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                                   unsigned(bytes.size()), baseDir);
-    logLines(path, warn);
+    logLines(path, shortenLongWords(warn));
     if (!imageContext.error.empty()) return makeError(imageContext.error);
-    if (!ok) return makeError(err.empty() ? std::string("tinygltf could not parse the file") : trimmed(err));
+    if (!ok) return makeError(err.empty() ? std::string("tinygltf could not parse the file") : shortenLongWords(trimmed(err)));
 
     Scene scene;
     scene.name = fsPath.stem().string();

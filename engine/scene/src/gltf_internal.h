@@ -44,6 +44,16 @@ uint32_t readIndex(const AccessorView& view, size_t i);
 const char* typeName(int tinygltfType);
 const char* componentTypeName(int componentType);
 
+// Checks on the raw file before tinygltf parses it (gltf_preflight.cpp): the GLB header version, and in
+// the JSON the asset version, extensionsRequired and buffer byteLengths, with errors naming the field.
+Status preflightGlb(const std::vector<unsigned char>& bytes);
+Status preflightJson(const unsigned char* json, size_t size);
+bool isSupportedExtension(const std::string& name);
+// `text` cut to maxChars with its full length noted: user strings (names, URIs) in messages stay short.
+std::string shortened(const std::string& text, size_t maxChars);
+// Every run of non-blank characters longer than maxWord shortened (tinygltf's errors quote data URIs).
+std::string shortenLongWords(const std::string& text, size_t maxWord = 96);
+
 // Safe JSON-value lookups (tinygltf::Value asserts on a wrong type).
 const tinygltf::Value* member(const tinygltf::Value& object, const char* key);
 float numberOr(const tinygltf::Value& object, const char* key, float fallback);
@@ -60,8 +70,10 @@ namespace caustics::scene::gltf {
 // (== Scene::textures) index, or -1. Warnings go to `warnings`.
 Material convertMaterial(const tinygltf::Material& material, const std::vector<int>& textureToImage,
                          std::vector<std::string>& warnings);
-// KHR_lights_punctual light placed by a node's world transform (it shines along the node's -Z).
-bool convertLight(const tinygltf::Light& light, const glm::mat4& world, Light& out, std::string& problem);
+// KHR_lights_punctual light placed by a node's world transform (it shines along the node's -Z). false +
+// `problem`: the light is unusable; `warning` (may be set on success): what was repaired.
+bool convertLight(const tinygltf::Light& light, const glm::mat4& world, Light& out, std::string& problem,
+                  std::string& warning);
 // Perspective camera looking down the node's -Z with +Y up.
 bool convertCamera(const tinygltf::Camera& camera, const glm::mat4& world, Camera& out, std::string& problem);
 

@@ -5,6 +5,7 @@
 // KHR_lights_punctual (point/spot in candela, directional in lux; the light looks down its -Z).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "gltf_internal.h"
 
@@ -61,7 +62,8 @@ Material convertMaterial(const tinygltf::Material& src, const std::vector<int>& 
 
 static bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-bool convertLight(const tinygltf::Light& src, const glm::mat4& world, Light& out, std::string& problem) {
+bool convertLight(const tinygltf::Light& src, const glm::mat4& world, Light& out, std::string& problem,
+                  std::string& warning) {
     out = Light{};
     out.name = src.name;
     if (src.type == "point") out.type = LightType::Point;
@@ -81,6 +83,15 @@ bool convertLight(const tinygltf::Light& src, const glm::mat4& world, Light& out
     out.range = std::max(finiteOr(src.range, 0.0f), 0.0f);
     out.innerConeAngle = std::max(finiteOr(src.spot.innerConeAngle, 0.0f), 0.0f);
     out.outerConeAngle = std::clamp(finiteOr(src.spot.outerConeAngle, 0.785398f), 0.0f, 1.5707963f);
+    if (out.type == LightType::Spot && out.innerConeAngle >= out.outerConeAngle) {
+        // glTF 2.0 KHR_lights_punctual requires inner < outer; the falloff (cosInner - cosOuter) would
+        // be empty. A hard-edged cone (inner = outer) is the nearest meaning; say so.
+        char text[160];
+        std::snprintf(text, sizeof(text), "spot cone: innerConeAngle %.3g rad is not below outerConeAngle %.3g rad; "
+                      "using a hard-edged cone of %.3g rad", double(out.innerConeAngle), double(out.outerConeAngle),
+                      double(out.outerConeAngle));
+        warning = text;
+    }
     out.innerConeAngle = std::min(out.innerConeAngle, out.outerConeAngle);
     out.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     glm::vec3 dir = glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));

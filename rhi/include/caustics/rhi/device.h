@@ -46,6 +46,11 @@ struct Capabilities {
     uint32_t maxInstanceCount = 0;
     double timestampPeriodNs = 1.0;      // nanoseconds per timestamp tick
     uint64_t minAccelStructScratchAlignment = 256;
+    // Limits a host checks before sizing its frame (0 = unknown): texture width/height, the largest
+    // device-local memory heap, and the largest single allocation (Vulkan maxMemoryAllocationSize).
+    uint32_t maxTextureDimension2D = 0;
+    uint64_t deviceMemoryBytes = 0;
+    uint64_t maxAllocationBytes = 0;
 };
 
 class IDevice {

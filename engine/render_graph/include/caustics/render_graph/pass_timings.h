@@ -18,6 +18,7 @@ public:
     uint32_t window() const { return window_; }
     void add(const std::string& pass, double milliseconds);
     std::optional<double> medianMs(std::string_view pass) const;
+    std::optional<double> latestMs(std::string_view pass) const;   // the newest sample (history plots)
     uint32_t sampleCount(std::string_view pass) const;
     void clear() { samples_.clear(); }
 

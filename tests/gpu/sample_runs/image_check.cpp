@@ -1,0 +1,86 @@
+// image-check: the assertions the sample's end-to-end tests make on the images it wrote (CTest runs
+// the sample, then this). Values are 8-bit channels scaled to 0..1; alpha is ignored. Exit 0 = pass.
+//   image-check mean FILE MIN [x y w h]           mean RGB over the region is at least MIN
+//   image-check differ A B MIN [x y w h]          mean |A - B| over the region is at least MIN
+//   image-check match A GOLDEN MAX [x y w h]      mean |A - GOLDEN| over the region is at most MAX
+//   image-check brighter A B MIN [x y w h]        mean(B) - mean(A) over the region is at least MIN
+//   image-check size FILE W H                     the image is W x H pixels
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "image_file.h"
+
+using caustics::sample::FloatImage;
+
+namespace {
+
+struct Region {
+    uint32_t x = 0, y = 0, w = 0, h = 0;
+};
+
+bool regionFrom(char** argv, int argc, int first, const FloatImage& image, Region& r) {
+    r = {0, 0, image.width, image.height};
+    if (argc == first) return true;
+    if (argc != first + 4) return false;
+    r = {uint32_t(std::atoi(argv[first])), uint32_t(std::atoi(argv[first + 1])), uint32_t(std::atoi(argv[first + 2])),
+         uint32_t(std::atoi(argv[first + 3]))};
+    return r.w > 0 && r.h > 0 && r.x + r.w <= image.width && r.y + r.h <= image.height;
+}
+
+double meanOver(const FloatImage& a, const FloatImage* b, const Region& r) {
+    double sum = 0.0;
+    for (uint32_t y = r.y; y < r.y + r.h; ++y)
+        for (uint32_t x = r.x; x < r.x + r.w; ++x)
+            for (uint32_t c = 0; c < 3; ++c) {
+                size_t i = (size_t(y) * a.width + x) * a.channels + c;
+                sum += b ? std::fabs(a.pixels[i] - b->pixels[i]) : a.pixels[i];
+            }
+    return sum / (3.0 * r.w * r.h);
+}
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "image-check: %s\n", message.c_str());
+    return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 4) return fail("usage: image-check mean FILE MIN | differ|match|brighter A B THRESHOLD [x y w h]");
+    std::string mode = argv[1];
+    auto a = caustics::sample::readImage(argv[2]);
+    if (!a) return fail(a.message());
+    if (mode == "size" && argc == 5) {
+        uint32_t w = uint32_t(std::atoi(argv[3])), h = uint32_t(std::atoi(argv[4]));
+        std::printf("image-check: %s is %ux%u (need %ux%u)\n", argv[2], a->width, a->height, w, h);
+        return a->width == w && a->height == h ? 0 : 1;
+    }
+    if (mode == "mean") {
+        Region r;
+        if (!regionFrom(argv, argc, 4, *a, r)) return fail("bad region");
+        double mean = meanOver(*a, nullptr, r), min = std::atof(argv[3]);
+        std::printf("image-check: mean %.4f (need >= %.4f) over %ux%u at %u,%u of %s\n", mean, min, r.w, r.h, r.x, r.y, argv[2]);
+        return mean >= min ? 0 : 1;
+    }
+    if (argc < 5) return fail("differ/match need two files and a threshold");
+    auto b = caustics::sample::readImage(argv[3]);
+    if (!b) return fail(b.message());
+    if (a->width != b->width || a->height != b->height || a->channels < 3 || b->channels != a->channels)
+        return fail("the images differ in size or channels");
+    Region r;
+    if (!regionFrom(argv, argc, 5, *a, r)) return fail("bad region");
+    double threshold = std::atof(argv[4]);
+    if (mode == "brighter") {
+        double gain = meanOver(*b, nullptr, r) - meanOver(*a, nullptr, r);
+        std::printf("image-check: mean(B) - mean(A) = %.4f (need >= %.4f)\n", gain, threshold);
+        return gain >= threshold ? 0 : 1;
+    }
+    double diff = meanOver(*a, &*b, r);
+    bool pass = mode == "differ" ? diff >= threshold : diff <= threshold;
+    std::printf("image-check: mean |difference| %.4f (need %s %.4f) over %ux%u at %u,%u\n", diff,
+                mode == "differ" ? ">=" : "<=", threshold, r.w, r.h, r.x, r.y);
+    return pass ? 0 : 1;
+}
