@@ -9,11 +9,7 @@ namespace caustics::sample {
 namespace {
 
 Result<double> parseNumber(const std::string& field, const std::string& text) {
-    char* end = nullptr;
-    double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-        return makeError("set " + field + ": '" + text + "' is not a number");
-    return v;
+    return parseFiniteNumber("set " + field, text);
 }
 
 Result<uint32_t> parseCount(const std::string& field, const std::string& text) {
@@ -93,6 +89,14 @@ const std::map<std::string, Setter>& setters() {
 }
 
 }  // namespace
+
+Result<double> parseFiniteNumber(const std::string& what, const std::string& text) {
+    char* end = nullptr;
+    double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
+        return makeError(what + ": '" + text + "' is not a number");
+    return v;
+}
 
 const char* causticsAovName(CausticsAov aov) {
     switch (aov) {

@@ -17,4 +17,7 @@ Status setSettingsField(CausticsSettings& settings, const std::string& field, co
 
 const char* causticsAovName(CausticsAov aov);
 
+// The whole of `text` as a finite number; the error starts with `what` (a field or "file:line").
+Result<double> parseFiniteNumber(const std::string& what, const std::string& text);
+
 }  // namespace caustics::sample

@@ -10,11 +10,8 @@ namespace caustics::sample {
 namespace {
 
 Result<float> number(const std::string& text, const std::string& where) {
-    char* end = nullptr;
-    float v = std::strtof(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-        return makeError(where + ": '" + text + "' is not a number");
-    return v;
+    CAUSTICS_TRY(double v, parseFiniteNumber(where, text));
+    return float(v);
 }
 
 Result<glm::vec3> vec3At(const std::vector<std::string>& w, size_t first, const std::string& where) {
