@@ -1,9 +1,10 @@
 #include "cli_options.h"
 
-#include <charconv>
-#include <initializer_list>
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
+
+#include "cli_numbers.h"
 
 namespace caustics::sample {
 namespace {
@@ -16,17 +17,7 @@ constexpr float kMaxRaysPerTexel = 256.0f;
 constexpr uint32_t kMaxFrames = 100000;
 
 Result<uint32_t> parseUint(const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
-    uint32_t value = 0;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-    // from_chars reports a well-formed number too large for 32 bits separately from garbage.
-    if (ec == std::errc::result_out_of_range && end == text.data() + text.size())
-        return makeError(option + ": " + text + " is out of range " + range);
-    if (ec != std::errc() || end != text.data() + text.size())
-        return makeError(option + ": '" + text + "' is not a whole number");
-    if (value < lo || value > hi)
-        return makeError(option + ": " + text + " is out of range " + range);
-    return value;
+    return parseWholeNumber(option, text, lo, hi);
 }
 
 Result<float> parseFloat(const std::string& option, const std::string& text, float lo, float hi) {

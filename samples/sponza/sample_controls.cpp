@@ -1,21 +1,15 @@
 #include "sample_controls.h"
 
-#include <charconv>
 #include <cmath>
 #include <sstream>
+
+#include "cli_numbers.h"
 
 namespace caustics::sample {
 namespace {
 
 Result<uint32_t> parseWhole(const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
-    uint32_t value = 0;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size())
-        return makeError(option + ": '" + text + "' is not a whole number in [" + std::to_string(lo) + ", " +
-                         std::to_string(hi) + "]");
-    if (value < lo || value > hi)
-        return makeError(option + ": " + text + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return value;
+    return parseWholeNumber(option, text, lo, hi);
 }
 
 // A number in (0, hi]: zero and negatives are refused, not clamped.

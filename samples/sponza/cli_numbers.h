@@ -1,0 +1,13 @@
+#pragma once
+// Whole numbers on the command line, for every option that takes one: garbage is "not a whole number",
+// a number too large for 32 bits is "out of range", one outside the option's range is "outside".
+#include <cstdint>
+#include <string>
+
+#include "caustics/rhi/result.h"
+
+namespace caustics::sample {
+
+Result<uint32_t> parseWholeNumber(const std::string& option, const std::string& text, uint32_t lo, uint32_t hi);
+
+}  // namespace caustics::sample
