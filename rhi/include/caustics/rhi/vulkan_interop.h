@@ -26,7 +26,9 @@ struct VulkanDeviceImport {
     uint32_t apiVersion = 0;          // VkApplicationInfo::apiVersion the host created its instance with
     std::vector<std::string> enabledExtensions;                  // VkDeviceCreateInfo::ppEnabledExtensionNames
     std::vector<std::string> enabledInstanceExtensions;          // VK_EXT_debug_utils here: objects get names
-    const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;  // VkDeviceCreateInfo::pNext chain (read once)
+    // VkDeviceCreateInfo::pNext: the feature chain (VkPhysicalDeviceFeatures2 or any feature structure
+    // first), read once during wrapVulkanDevice.
+    const void* enabledFeatures = nullptr;
     PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;     // the host's loader entry
     bool requireRayTracing = true;    // false: compute/raster only (refuses nothing about ray tracing)
     std::string debugName = "host device";
