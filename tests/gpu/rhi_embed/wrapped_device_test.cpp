@@ -33,6 +33,15 @@ protected:
         EXPECT_TRUE(seen.empty()) << seen.size() << " validation message(s):" << all;
     }
 
+    // Creates the raw host (with ray tracing) and wraps its device into `device`; false on failure.
+    ::testing::AssertionResult wrapHost() {
+        if (!host.create(/*withRayTracing=*/true)) return ::testing::AssertionFailure() << host.why();
+        auto wrapped = wrapVulkanDevice(host.deviceImport());
+        if (!wrapped) return ::testing::AssertionFailure() << wrapped.message();
+        device = wrapped.value();
+        return ::testing::AssertionSuccess();
+    }
+
     RawVulkanHost host;
     DeviceHandle device;
 };
@@ -172,10 +181,7 @@ std::vector<uint32_t> runHostFrame(RawVulkanHost& host, IDevice& device, bool al
 }
 
 TEST_F(WrappedVulkanDevice, GraphRecordsIntoHostCommandBufferAndLeavesHostImageInDeclaredLayout) {
-    ASSERT_TRUE(host.create(/*withRayTracing=*/true)) << host.why();
-    auto wrapped = wrapVulkanDevice(host.deviceImport());
-    ASSERT_TRUE(wrapped.ok()) << wrapped.message();
-    device = wrapped.value();
+    ASSERT_TRUE(wrapHost());
     EXPECT_EQ(device->getNativeObject(NativeObjectType::VkDevice).as<VkDevice>(), host.device);
     EXPECT_EQ(device->getNativeObject(NativeObjectType::VkQueue).as<VkQueue>(), host.queue);
     EXPECT_TRUE(device->capabilities().rayTracingPipeline);
@@ -193,10 +199,7 @@ TEST_F(WrappedVulkanDevice, GraphRecordsIntoHostCommandBufferAndLeavesHostImageI
 }
 
 TEST_F(WrappedVulkanDevice, TimestampsSwitchedOffRecordNoQueriesIntoHostCommandBuffer) {
-    ASSERT_TRUE(host.create(/*withRayTracing=*/true)) << host.why();
-    auto wrapped = wrapVulkanDevice(host.deviceImport());
-    ASSERT_TRUE(wrapped.ok()) << wrapped.message();
-    device = wrapped.value();
+    ASSERT_TRUE(wrapHost());
     std::optional<double> passTime;
     std::vector<uint32_t> values = runHostFrame(host, *device, /*allowTimestamps=*/false, passTime);
     ASSERT_EQ(values.size(), kWidth * kHeight);
@@ -221,10 +224,7 @@ TEST_F(WrappedVulkanDevice, DeviceWithoutRayTracingIsRefusedNamingEveryMissingEx
 }
 
 TEST_F(WrappedVulkanDevice, ImportWithoutStorageUsageForStorageUseIsRefusedNamingTheTexture) {
-    ASSERT_TRUE(host.create(/*withRayTracing=*/true)) << host.why();
-    auto wrapped = wrapVulkanDevice(host.deviceImport());
-    ASSERT_TRUE(wrapped.ok()) << wrapped.message();
-    device = wrapped.value();
+    ASSERT_TRUE(wrapHost());
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     RawImage image = host.createImage(8, 8, VK_FORMAT_R8G8B8A8_UNORM, usage);
     auto refused = importVulkanTexture(*device, {.image = image.image, .format = VK_FORMAT_R8G8B8A8_UNORM,
@@ -243,6 +243,33 @@ TEST_F(WrappedVulkanDevice, ImportWithoutStorageUsageForStorageUseIsRefusedNamin
     EXPECT_TRUE(sampled.ok()) << sampled.message();
     sampled = Error{};   // release the import before the host destroys its image
     host.destroy(image);
+}
+
+TEST_F(WrappedVulkanDevice, ImportOfBufferWithoutStorageUsageForStorageUseIsRefusedNamingTheBuffer) {
+    ASSERT_TRUE(wrapHost());
+    RawBuffer buffer = host.createHostBuffer(256, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    auto refused = importVulkanBuffer(*device, {.buffer = buffer.buffer, .byteSize = 256,
+                                                .usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                                .uses = BufferUsage::Storage | BufferUsage::Constant,
+                                                .debugName = "host constants"});
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.message().find("'host constants'"), std::string::npos) << refused.message();
+    EXPECT_NE(refused.message().find("VK_BUFFER_USAGE_STORAGE_BUFFER_BIT"), std::string::npos) << refused.message();
+    EXPECT_EQ(refused.message().find("Constant"), std::string::npos) << "Constant is allowed: " << refused.message();
+    host.destroy(buffer);
+}
+
+TEST_F(WrappedVulkanDevice, HostCommandBufferIsNeverSubmittedByTheDevice) {
+    ASSERT_TRUE(wrapHost());
+    host.begin();
+    auto cmd = wrapVulkanCommandBuffer(*device, {.commandBuffer = host.commandBuffer});
+    ASSERT_TRUE(cmd.ok()) << cmd.message();
+    cmd.value()->end();   // records nothing: the host still ends the buffer itself below
+    auto submitted = device->submit(cmd.value());
+    ASSERT_FALSE(submitted.ok());
+    EXPECT_NE(submitted.message().find("the host submits it"), std::string::npos) << submitted.message();
+    // The buffer is still the host's to end and submit (the layer would report ending it twice).
+    EXPECT_TRUE(host.endSubmitAndWait());
 }
 
 }  // namespace
