@@ -54,7 +54,7 @@ struct CausticHit {
 };
 static_assert(sizeof(CausticHit) == 80);
 
-// One backward (second-type) integration sphere per camera pixel (std430, 48 bytes).
+// One backward (second-type) integration sphere per camera pixel (std430, 64 bytes).
 struct CausticSphere {
     glm::vec3 centre;
     float radius;            // 0 = the pixel has no sphere
@@ -62,8 +62,10 @@ struct CausticSphere {
     uint32_t objectId;
     glm::vec3 normal;        // unit, on the side the camera path arrived from
     uint32_t pixel;
+    glm::vec3 outgoing;      // unit, from the receiver back along the camera path (wo of the gather's BRDF)
+    float pad;
 };
-static_assert(sizeof(CausticSphere) == 48);
+static_assert(sizeof(CausticSphere) == 64);
 
 // Objects that live across frames: pipelines, the sphere BLAS/TLAS, filter history. Create once per
 // device and scene (or when the output size changes: it recreates itself).

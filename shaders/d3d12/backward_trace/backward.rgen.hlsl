@@ -35,11 +35,12 @@ struct Push {
 };
 ConstantBuffer<Push> pc : register(b0, space999);
 
-void writeSphere(uint pixel, float3 centre, float radius, float3 transmittance, uint objectId, float3 normal) {
-    uint o = 48u * pixel;
+void writeSphere(uint pixel, float3 centre, float radius, float3 transmittance, uint objectId, float3 normal, float3 outgoing) {
+    uint o = kCausticSphereBytes * pixel;
     spheres.Store4(o, uint4(asuint(centre), asuint(radius)));
     spheres.Store4(o + 16u, uint4(asuint(transmittance), objectId));
     spheres.Store4(o + 32u, uint4(asuint(normal), pixel));
+    spheres.Store4(o + 48u, uint4(asuint(outgoing), 0u));
 }
 
 // Row-major 3x4 transform (scale r, translate c), id/mask, SBT offset/flags, BLAS address.
@@ -52,8 +53,8 @@ void writeInstance(uint pixel, float3 c, float r, uint mask) {
 }
 
 void writeEmpty(uint pixel) {
-    spheres.Store(48u * pixel + 12u, asuint(0.0f));   // radius 0: no sphere
-    spheres.Store(48u * pixel + 44u, pixel);
+    spheres.Store(kCausticSphereBytes * pixel + 12u, asuint(0.0f));   // radius 0: no sphere
+    spheres.Store(kCausticSphereBytes * pixel + 44u, pixel);
     writeInstance(pixel, (float3)0.0f, 0.0f, 0u);     // mask 0: never hit
 }
 
@@ -147,7 +148,7 @@ void main() {
             radius = gatherDiskRadius(rayFootprintArea(rd), pathLength * sqrt(pinholePixelArea(cam)), limits);
         }
         radius = max(clampRadiusAtWalls(x, nFacing, radius), min(pc.minRadius, radius));
-        writeSphere(pixel, x, radius, throughput, h.objectId, nFacing);
+        writeSphere(pixel, x, radius, throughput, h.objectId, nFacing, -dir);
         writeInstance(pixel, x, radius, 0xFFu);
         stats.InterlockedAdd(4u * kStatSpheres, 1u);
         return;

@@ -16,8 +16,7 @@ void main(inout GatherPayload payload, in SphereAttributes attribs) {
     CausticSphere s = loadCausticSphere(spheres, InstanceIndex());
     CausticHit h = loadCausticHit(hits, payload.hitIndex);
     if (h.objectId == s.objectId && dot(h.normal, s.normal) > 0.0f) {
-        // The sphere stores no outgoing direction yet: the BRDF is read towards the normal.
-        addRadiance(s.pixel, causticHitReflectedFlux(h, s.normal) * s.transmittance / (kPi * s.radius * s.radius));
+        addRadiance(s.pixel, causticHitReflectedFlux(h, s.outgoing) * s.transmittance / (kPi * s.radius * s.radius));
         stats.InterlockedAdd(4u * kStatGatherHits, 1u);
     }
     IgnoreHit();

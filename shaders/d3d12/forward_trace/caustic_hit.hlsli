@@ -1,6 +1,6 @@
 #ifndef CAUSTICS_D3D12_CAUSTIC_HIT_HLSLI
 #define CAUSTICS_D3D12_CAUSTIC_HIT_HLSLI
-// std430 CausticHit (80 bytes) / CausticSphere (48 bytes) and the statistics slots (mirror of
+// std430 CausticHit (80 bytes) / CausticSphere (64 bytes) and the statistics slots (mirror of
 // shaders/vulkan/forward_trace/caustic_hit.glsl), read/written through byte-address buffers.
 #include "common/bsdf.h"
 struct CausticHit {
@@ -18,7 +18,10 @@ uint packUnorm2x16(float2 v) {
     return q.x | (q.y << 16);
 }
 float2 unpackUnorm2x16(uint p) { return float2(p & 0xFFFFu, p >> 16) / 65535.0f; }
-struct CausticSphere { float3 centre; float radius; float3 transmittance; uint objectId; float3 normal; uint pixel; };
+struct CausticSphere {   // 64 bytes
+    float3 centre; float radius; float3 transmittance; uint objectId; float3 normal; uint pixel; float3 outgoing;
+};
+static const uint kCausticSphereBytes = 64u;
 
 static const uint kStatStoredHitAttempts = 0u;
 static const uint kStatSplats = 1u;
@@ -67,12 +70,13 @@ float3 causticHitReflectedFlux(CausticHit h, float3 wo) {
 }
 
 CausticSphere loadCausticSphere(ByteAddressBuffer b, uint i) {
-    uint o = 48u * i;
+    uint o = kCausticSphereBytes * i;
     uint4 a = b.Load4(o), t = b.Load4(o + 16u), n = b.Load4(o + 32u);
     CausticSphere s;
     s.centre = asfloat(a.xyz); s.radius = asfloat(a.w);
     s.transmittance = asfloat(t.xyz); s.objectId = t.w;
     s.normal = asfloat(n.xyz); s.pixel = n.w;
+    s.outgoing = asfloat(b.Load3(o + 48u));
     return s;
 }
 

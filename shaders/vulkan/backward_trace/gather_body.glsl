@@ -15,8 +15,7 @@ void main() {
     CausticSphere s = spheres[gl_InstanceID];
     CausticHit h = hits[hitIndex];
     if (h.objectId == s.objectId && dot(h.normal, s.normal) > 0.0) {
-        // The sphere stores no outgoing direction yet: the BRDF is read towards the normal.
-        addRadiance(s.pixel, causticHitReflectedFlux(h, s.normal) * s.transmittance / (kPi * s.radius * s.radius));
+        addRadiance(s.pixel, causticHitReflectedFlux(h, s.outgoing) * s.transmittance / (kPi * s.radius * s.radius));
         atomicAdd(stats[kStatGatherHits], 1u);
     }
     ignoreIntersectionEXT;

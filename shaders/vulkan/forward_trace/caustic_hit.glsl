@@ -41,6 +41,7 @@ struct CausticSphere {
     vec3 centre;        float radius;   // radius 0: no sphere
     vec3 transmittance; uint objectId;
     vec3 normal;        uint pixel;
+    vec3 outgoing;      float pad;  // unit, from the receiver back along the camera path (BRDF wo)
 };
 const uint kStatStoredHitAttempts = 0u;
 const uint kStatSplats = 1u;

@@ -41,7 +41,7 @@ TEST_F(CausticGather, SecondTypeEqualsCpuBruteForceGatherOnTheSameHitsAndSpheres
             // boundary could round either way, and are rare enough (measure zero) not to matter here.
             if (!shader::insideGatherDisk(h.position, s.centre, s.normal, s.radius)) continue;
             if (h.objectId != s.objectId || glm::dot(h.normal, s.normal) <= 0.0f) continue;
-            expected[s.pixel] += glm::dvec3(reflectedFlux(h, s.normal) * s.transmittance) / (3.14159265358979 * s.radius * s.radius);
+            expected[s.pixel] += glm::dvec3(reflectedFlux(h, s.outgoing) * s.transmittance) / (3.14159265358979 * s.radius * s.radius);
             ++pairs;
         }
     }
