@@ -36,7 +36,7 @@ struct CausticsSettings {
     bool russianRoulette = true;        // after the second event, by path throughput
     bool secondType = true;             // caustics seen through specular objects
     SphereRadiusPolicy sphereRadiusPolicy = SphereRadiusPolicy::PixelFootprint;
-    float sphereRadiusScale = 2.0f;     // PixelFootprint: radius in footprint widths (camera pixels)
+    float sphereRadiusScale = 1.0f;     // PixelFootprint: radius in footprint widths (camera pixels)
     float sphereWorldRadius = 0.01f;    // FixedWorld: metres
     // PixelFootprint clamps. Magnification: footprint width / unfolded width; ray differentials blow
     // up at folds of the camera path and at grazing receivers. Radii in metres. Both policies keep

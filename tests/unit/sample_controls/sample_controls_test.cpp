@@ -26,7 +26,7 @@ TEST(SampleControls, DefaultsMatchCausticsSettings) {
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r->controls.seed, 1u);
     EXPECT_EQ(r->controls.accumulate, 0u);
-    EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 2.0f);
+    EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 1.0f);  // CausticsSettings::sphereRadiusScale
     EXPECT_EQ(r->controls.sphereRadiusPolicy, SphereRadiusChoice::Pixel);
     EXPECT_FLOAT_EQ(r->controls.sphereWorldRadius, 0.01f);
 }
