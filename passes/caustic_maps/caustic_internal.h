@@ -11,11 +11,12 @@ namespace caustics {
 struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
     bool floatAtomics = true;
-    rhi::BindingLayoutHandle mapLayout, forwardLayout, backwardLayout, gatherLayout;
+    rhi::BindingLayoutHandle mapLayout, emitterLayout, forwardLayout, backwardLayout, gatherLayout;
     rhi::BindingLayoutHandle resolveLayout, temporalLayout, atrousLayout, historyLayout;
     // Built against a scene binding layout (recreated when the scene's layout changes).
     const rhi::IBindingLayout* sceneLayoutSeen = nullptr;
     rhi::GraphicsPipelineHandle mapPipeline;
+    rhi::ComputePipelineHandle emitterPipeline;   // scene set + emitterLayout
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
     rhi::ComputePipelineHandle resolve, temporal, atrous, history;
@@ -43,13 +44,15 @@ struct CausticFrame {
     CausticResources::Impl* res = nullptr;
     uint32_t width = 0, height = 0;
     rg::RgBuffer camera, maps, radiance1, radiance2, hits, stats, spheres, instances;
-    rg::RgTexture mapPositions, mapNormals, mapIds, mapDepth;
+    rg::RgBuffer emitters, forwardArgs;   // caustics.emitters -> caustics.forward
+    rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereTlas;
     CausticMapPlan plan;
 };
 
 void addSetupPass(rg::RenderGraph& graph, CausticFrame& f);
 void addMapPass(rg::RenderGraph& graph, CausticFrame& f);
+void addEmitterPass(rg::RenderGraph& graph, CausticFrame& f);
 void addForwardPass(rg::RenderGraph& graph, CausticFrame& f);
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
 void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out);
@@ -57,13 +60,19 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
 // Records one scene trace: the scene set (0), the pass's own set (1), push constants, the grid.
 // The forward and backward passes differ only in these arguments.
 template <typename PushConstants>
-void recordSceneTrace(rhi::ICommandList& cmd, const rhi::StateObjectHandle& state, const rhi::ShaderTableHandle& table,
-                      const rhi::BindingSetHandle& sceneSet, const rhi::BindingSetHandle& passSet,
-                      const PushConstants& push, uint32_t width, uint32_t height, uint32_t depth) {
+void bindSceneTrace(rhi::ICommandList& cmd, const rhi::StateObjectHandle& state, const rhi::ShaderTableHandle& table,
+                    const rhi::BindingSetHandle& sceneSet, const rhi::BindingSetHandle& passSet,
+                    const PushConstants& push) {
     cmd.setRayTracingState(state, table);
     cmd.setBindingSet(0, sceneSet);
     cmd.setBindingSet(1, passSet);
     cmd.setPushConstants(&push, sizeof(push));
+}
+template <typename PushConstants>
+void recordSceneTrace(rhi::ICommandList& cmd, const rhi::StateObjectHandle& state, const rhi::ShaderTableHandle& table,
+                      const rhi::BindingSetHandle& sceneSet, const rhi::BindingSetHandle& passSet,
+                      const PushConstants& push, uint32_t width, uint32_t height, uint32_t depth) {
+    bindSceneTrace(cmd, state, table, sceneSet, passSet, push);
     cmd.dispatchRays(width, height, depth);
 }
 

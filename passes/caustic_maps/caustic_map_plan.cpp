@@ -55,13 +55,39 @@ bool coneTouchesSphere(glm::vec3 apex, glm::vec3 axis, float halfAngle, glm::vec
     return angle <= halfAngle + std::asin(std::min(1.0f, s.w / d));
 }
 
+// The instances map m must rasterise: occluders and specular objects inside its frustum.
+std::vector<uint32_t> instancesInFrustum(const CausticMapGpu& m, const SpecularBounds& bounds) {
+    std::vector<uint32_t> drawn;
+    for (uint32_t i = 0; i < bounds.allInstanceSpheres.size(); ++i) {
+        glm::vec4 s = bounds.allInstanceSpheres[i];
+        if (s.w >= 0.0f && mapFrustumTouchesSphere(m, s)) drawn.push_back(i);
+    }
+    return drawn;
+}
+
 }  // namespace
+
+bool mapFrustumTouchesSphere(const CausticMapGpu& m, glm::vec4 sphere) {
+    glm::vec3 v = glm::vec3(sphere) - m.origin;
+    float along = glm::dot(v, m.forward);
+    if (m.orthographic) {
+        // The square of half-side `extent` lies inside the circle of radius extent * sqrt(2).
+        float lateral = glm::length(v - along * m.forward);
+        return along >= -sphere.w && lateral <= m.extent * std::sqrt(2.0f) + sphere.w;
+    }
+    // The square frustum's corners are at tan(half-angle) * sqrt(2) off the axis on the plane z = 1.
+    float halfAngle = std::atan(m.extent * std::sqrt(2.0f));
+    return coneTouchesSphere(m.origin, m.forward, halfAngle, sphere);
+}
 
 SpecularBounds computeSpecularBounds(const scene::Scene& scene) {
     SpecularBounds b;
     glm::vec3 specLo(1e30f), specHi(-1e30f), allLo(1e30f), allHi(-1e30f);
     for (const scene::Instance& inst : scene.instances) {
-        if (inst.mesh >= scene.meshes.size()) continue;
+        if (inst.mesh >= scene.meshes.size()) {
+            b.allInstanceSpheres.push_back(glm::vec4(0, 0, 0, -1));
+            continue;
+        }
         const scene::Mesh& mesh = scene.meshes[inst.mesh];
         glm::vec3 lo(1e30f), hi(-1e30f);
         for (const glm::vec3& p : mesh.positions) {
@@ -69,6 +95,7 @@ SpecularBounds computeSpecularBounds(const scene::Scene& scene) {
             lo = glm::min(lo, w);
             hi = glm::max(hi, w);
         }
+        b.allInstanceSpheres.push_back(lo.x > hi.x ? glm::vec4(0, 0, 0, -1) : sphereOf(lo, hi));
         if (lo.x > hi.x) continue;
         allLo = glm::min(allLo, lo);
         allHi = glm::max(allHi, hi);
@@ -117,6 +144,7 @@ CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& 
             m.nearPlane = 0.0f;
             m.viewProj = mapViewProj(m, back + bounds.radius);
             plan.maps.push_back(m);
+            plan.drawnInstances.push_back(instancesInFrustum(m, bounds));
             continue;
         }
         bool spot = light.type == scene::LightType::Spot;
@@ -149,6 +177,7 @@ CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& 
         m.nearPlane = std::max(1e-3f, 1e-5f * (distance + bounds.radius));
         m.viewProj = mapViewProj(m, distance + bounds.radius * 1.01f + 1e-3f);
         plan.maps.push_back(m);
+        plan.drawnInstances.push_back(instancesInFrustum(m, bounds));
     }
     return plan;
 }

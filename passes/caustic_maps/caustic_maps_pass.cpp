@@ -1,5 +1,7 @@
-// caustics.maps: the light-space G-buffers (paper 3.2, Figure 3), one texture-array layer per planned
-// map, all of the planned resolution (so one forward dispatch covers every light).
+// caustics.maps: the light-space visibility maps (paper 3.2, Figure 3), one texture-array layer per
+// planned map, all of the planned resolution (so one forward dispatch covers every light). Only what
+// the forward pass reads is rendered: the objectId target (plus the depth it needs), and only the
+// instances inside each map's frustum (CausticMapPlan::drawnInstances).
 #include "caustic_maps/caustic_internal.h"
 
 namespace caustics {
@@ -14,16 +16,18 @@ void addMapPass(rg::RenderGraph& graph, CausticFrame& f) {
                                      .setDebugName(name);
             return b.write(b.createTexture(name, d), access);
         };
-        f.mapPositions = tex("caustics.mapPositions", rhi::Format::RGBA32_FLOAT, rg::Access::RenderTarget);
-        f.mapNormals = tex("caustics.mapNormals", rhi::Format::RGBA16_FLOAT, rg::Access::RenderTarget);
         f.mapIds = tex("caustics.mapObjectIds", rhi::Format::R32_UINT, rg::Access::RenderTarget);
         f.mapDepth = tex("caustics.mapDepth", rhi::Format::D32_FLOAT, rg::Access::DepthWrite);
         f.maps = b.read(f.maps, rg::Access::SampledRead);
-        std::vector<std::pair<uint32_t, uint32_t>> draws;   // (instance, index count)
+        // Per layer: (instance, index count) of the instances inside that map's frustum.
+        std::vector<std::vector<std::pair<uint32_t, uint32_t>>> draws(layers);
         const scene::GpuScene& gs = *f.in->gpuScene;
-        for (uint32_t i = 0; i < f.in->scene->instances.size(); ++i) {
-            uint32_t mesh = f.in->scene->instances[i].mesh;
-            if (mesh < gs.meshRanges.size() && gs.meshRanges[mesh].indexCount > 0) draws.push_back({i, gs.meshRanges[mesh].indexCount});
+        for (uint32_t layer = 0; layer < layers; ++layer) {
+            for (uint32_t i : f.plan.drawnInstances[layer]) {
+                uint32_t mesh = f.in->scene->instances[i].mesh;
+                if (mesh < gs.meshRanges.size() && gs.meshRanges[mesh].indexCount > 0)
+                    draws[layer].push_back({i, gs.meshRanges[mesh].indexCount});
+            }
         }
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
@@ -36,13 +40,11 @@ void addMapPass(rg::RenderGraph& graph, CausticFrame& f) {
             for (uint32_t layer = 0; layer < layers; ++layer) {
                 rhi::RenderingDesc rd;
                 rd.width = rd.height = n;
-                for (rg::RgTexture t : {h.mapPositions, h.mapNormals, h.mapIds}) {
-                    rhi::ColorAttachment a;
-                    a.texture = ctx.texture(t);
-                    a.layer = layer;
-                    a.clear = true;   // id 0 = nothing seen
-                    rd.colors.push_back(a);
-                }
+                rhi::ColorAttachment ids;
+                ids.texture = ctx.texture(h.mapIds);
+                ids.layer = layer;
+                ids.clear = true;   // id 0 = nothing seen
+                rd.colors.push_back(ids);
                 rd.depth.texture = ctx.texture(h.mapDepth);
                 rd.depth.layer = layer;
                 rd.depth.clear = true;
@@ -52,7 +54,7 @@ void addMapPass(rg::RenderGraph& graph, CausticFrame& f) {
                 cmd.setBindingSet(0, sceneSet);
                 cmd.setBindingSet(1, set);
                 cmd.setPushConstants(&layer, 4);
-                for (auto [instance, indexCount] : draws) cmd.draw(indexCount, 1, 0, instance);
+                for (auto [instance, indexCount] : draws[layer]) cmd.draw(indexCount, 1, 0, instance);
                 cmd.endRendering();
             }
         };

@@ -21,6 +21,9 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.radiance1 = buffer("caustics.firstTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
         f.radiance2 = buffer("caustics.secondTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
         f.stats = buffer("caustics.stats", kStatCount * 4, storage | rhi::BufferUsage::CopySource);
+        // The forward grid (emitters, samples per texel, 1), counted up by caustics.emitters.
+        f.forwardArgs = buffer("caustics.forwardArgs", 12, storage | rhi::BufferUsage::Indirect);
+        const uint32_t forwardGrid[3] = {0u, uint32_t(std::ceil(f.in->settings.raysPerTexel)), 1u};
         CameraConstants camera = f.in->camera;
         std::vector<CausticMapGpu> maps = f.plan.maps;
         CausticFrame h = f;
@@ -32,6 +35,7 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
             cmd.fillBuffer(ctx.buffer(h.radiance1), 0);
             cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
             cmd.fillBuffer(ctx.buffer(h.stats), 0);
+            cmd.writeBuffer(ctx.buffer(h.forwardArgs), forwardGrid, sizeof(forwardGrid));
         };
     });
 }
@@ -85,6 +89,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     addSetupPass(graph, f);
     if (!f.plan.maps.empty()) {
         addMapPass(graph, f);
+        addEmitterPass(graph, f);
         addForwardPass(graph, f);
         if (in.settings.secondType) addBackwardPasses(graph, f);
     }
@@ -94,7 +99,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     out.hits = f.hits;
     out.stats = f.stats;
     out.spheres = f.spheres;
-    out.mapPositions = f.mapPositions;
+    out.mapObjectIds = f.mapIds;
     out.plan = std::move(f.plan);
     return out;
 }

@@ -21,12 +21,12 @@ Result<rhi::BindingLayoutHandle> layout(rhi::IDevice& d, std::initializer_list<s
 }
 
 
-Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path, const rhi::BindingLayoutHandle& l,
-                                           uint32_t push) {
+Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path,
+                                           std::vector<rhi::BindingLayoutHandle> layouts, uint32_t push) {
     rhi::ComputePipelineDesc desc;
     CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(d.backend(), path));
     desc.shader.stage = ShaderStage::Compute;
-    desc.bindings.layouts = {l};
+    desc.bindings.layouts = std::move(layouts);
     desc.bindings.pushConstantBytes = push;
     desc.debugName = path;
     return d.createComputePipeline(desc);
@@ -68,17 +68,18 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d) {
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
                TX = BindingType::SampledTexture, IM = BindingType::StorageTexture, AS = BindingType::AccelStruct;
     CAUSTICS_TRY(m.mapLayout, layout(d, {{0, RO}}));
-    CAUSTICS_TRY(m.forwardLayout, layout(d, {{0, CB}, {1, RO}, {2, TX}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW}}));
+    CAUSTICS_TRY(m.emitterLayout, layout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
+    CAUSTICS_TRY(m.forwardLayout, layout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW}}));
     CAUSTICS_TRY(m.backwardLayout, layout(d, {{0, CB}, {1, TX}, {2, TX}, {3, RW}, {4, RW}, {5, RW}}));
     CAUSTICS_TRY(m.gatherLayout, layout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
     CAUSTICS_TRY(m.resolveLayout, layout(d, {{0, RO}, {1, RO}, {2, IM}, {3, IM}, {4, IM}}));
     CAUSTICS_TRY(m.temporalLayout, layout(d, {{0, CB}, {1, TX}, {2, TX}, {3, TX}, {4, TX}, {5, TX}, {6, TX}, {7, TX}, {8, TX}, {9, IM}}));
     CAUSTICS_TRY(m.atrousLayout, layout(d, {{0, TX}, {1, TX}, {2, TX}, {3, TX}, {4, IM}}));
     CAUSTICS_TRY(m.historyLayout, layout(d, {{0, TX}, {1, TX}, {2, TX}, {3, TX}, {4, IM}, {5, IM}, {6, IM}, {7, IM}}));
-    CAUSTICS_TRY(m.resolve, compute(d, "caustic_filter/resolve.comp", m.resolveLayout, 16));
-    CAUSTICS_TRY(m.temporal, compute(d, "caustic_filter/temporal.comp", m.temporalLayout, 8));
-    CAUSTICS_TRY(m.atrous, compute(d, "caustic_filter/atrous.comp", m.atrousLayout, 16));
-    CAUSTICS_TRY(m.history, compute(d, "caustic_filter/history.comp", m.historyLayout, 8));
+    CAUSTICS_TRY(m.resolve, compute(d, "caustic_filter/resolve.comp", {m.resolveLayout}, 16));
+    CAUSTICS_TRY(m.temporal, compute(d, "caustic_filter/temporal.comp", {m.temporalLayout}, 8));
+    CAUSTICS_TRY(m.atrous, compute(d, "caustic_filter/atrous.comp", {m.atrousLayout}, 16));
+    CAUSTICS_TRY(m.history, compute(d, "caustic_filter/history.comp", {m.historyLayout}, 8));
 
     // Gather: sphere.rint + gather.rahit over the sphere TLAS (procedural hit group).
     rhi::StateObjectDesc g;
@@ -128,10 +129,11 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     gp.bindings.layouts = {sceneLayout, mapLayout};
     gp.bindings.pushConstantBytes = 4;
     gp.cullMode = rhi::CullMode::None;   // glass is seen from both sides
-    gp.colorFormats = {rhi::Format::RGBA32_FLOAT, rhi::Format::RGBA16_FLOAT, rhi::Format::R32_UINT};
+    gp.colorFormats = {rhi::Format::R32_UINT};   // objectId only: the forward pass reads nothing else
     gp.depthFormat = rhi::Format::D32_FLOAT;
     gp.debugName = "caustics.maps";
     CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
+    CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout}, 4));
     CAUSTICS_CHECK(sceneTraceState(d, floatAtomics ? "forward_trace/forward.rgen" : "forward_trace/forward_fixed.rgen",
                                    sceneLayout, forwardLayout, forwardState, forwardTable));
     CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", sceneLayout, backwardLayout, backwardState, backwardTable));

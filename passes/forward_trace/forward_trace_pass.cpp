@@ -1,6 +1,8 @@
-// caustics.forward (paper 3.2, Figure 4): one ray-generation launch per (map texel x sample, map row,
-// map layer) covers every caustic-forming light in one dispatch; forward.rgen emits, traces the
-// specular chain, splats first-type caustics atomically and stores the diffuse hits.
+// caustics.forward (paper 3.2, Figure 4): one ray-generation launch per (emitting texel, sample) of
+// every caustic-forming light's map, in one dispatch whose grid caustics.emitters counted on the GPU
+// (dispatchRaysIndirect; without it, a direct dispatch over the list's capacity whose launches past
+// the list's length idle). forward.rgen emits, traces the specular chain, splats first-type caustics
+// atomically and stores the diffuse hits.
 #include <cmath>
 
 #include "caustic_maps/caustic_internal.h"
@@ -12,7 +14,9 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
         const CausticsSettings& s = f.in->settings;
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         f.maps = b.read(f.maps, rg::Access::SampledRead);
-        f.mapIds = b.read(f.mapIds, rg::Access::SampledRead);
+        f.emitters = b.read(f.emitters, rg::Access::SampledRead);
+        const bool indirect = f.res->device->capabilities().rayTracingIndirect;
+        if (indirect) f.forwardArgs = b.read(f.forwardArgs, rg::Access::IndirectArgument);
         rg::RgTexture linearDepth = b.read(f.in->gbuffer.linearDepth, rg::Access::SampledRead);
         rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
         f.radiance1 = b.write(f.radiance1, rg::Access::StorageReadWrite);
@@ -37,7 +41,7 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
             rhi::BindingSetDesc d;
             d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(h.camera)))
                 .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(h.maps), false))
-                .add(rhi::BindingSetItem::sampledTexture(2, ctx.texture(h.mapIds)))
+                .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(h.emitters), false))
                 .add(rhi::BindingSetItem::sampledTexture(3, ctx.texture(linearDepth)))
                 .add(rhi::BindingSetItem::sampledTexture(4, ctx.texture(objectId)))
                 .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.radiance1)))
@@ -45,8 +49,9 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
                 .add(rhi::BindingSetItem::storageBuffer(7, ctx.buffer(h.stats)));
             rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.forwardLayout, d);
             if (!set) return;
-            recordSceneTrace(ctx.cmd(), r.forwardState, r.forwardTable, sceneSet, set, push,
-                             push.mapSize * push.samplesPerTexel, push.mapSize, layers);
+            bindSceneTrace(ctx.cmd(), r.forwardState, r.forwardTable, sceneSet, set, push);
+            if (indirect) ctx.cmd().dispatchRaysIndirect(ctx.buffer(h.forwardArgs));
+            else ctx.cmd().dispatchRays(push.mapSize * push.mapSize * layers, push.samplesPerTexel, 1);
         };
     });
 }

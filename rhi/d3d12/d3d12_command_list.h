@@ -209,6 +209,10 @@ public:
         list->DispatchRays(&d);
     }
 
+    // d3d12_dispatch_rays_indirect.cpp
+    void dispatchRaysIndirect(const BufferHandle& args, uint64_t offset) override;
+    ComPtr<ID3D12CommandSignature> dispatchRaysSignature;   // made on first use
+
     void buildBottomLevel(const AccelStructHandle& handle, bool update) override {
         auto* as = static_cast<AccelStruct*>(handle.get());
         BottomLevelInputs inputs;

@@ -95,6 +95,7 @@ Status Device::init(const DeviceDesc& desc) {
         caps_.adapterName = name;
         caps_.rayTracingPipeline = caps_.accelerationStructure = dxr;
         caps_.rayQuery = o5.RaytracingTier >= D3D12_RAYTRACING_TIER_1_1;
+        caps_.rayTracingIndirect = o5.RaytracingTier >= D3D12_RAYTRACING_TIER_1_1;   // ExecuteIndirect DispatchRays
         return true;
     };
     bool found = false;

@@ -17,8 +17,10 @@ VkBufferUsageFlags toVkBufferUsage(BufferUsage usage) {
         flags |= VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     if (hasAny(usage, BufferUsage::ShaderTable)) flags |= VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR;
     // Device addresses: AS inputs/storage, shader tables and storage buffers (vertex pulling through
-    // buffer_reference, AS scratch); bufferDeviceAddress is a required feature.
+    // buffer_reference, AS scratch), indirect arguments (vkCmdTraceRaysIndirectKHR takes an address);
+    // bufferDeviceAddress is a required feature.
     if (flags & (VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR |
+                 VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                  VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR))
         flags |= VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
     return flags;

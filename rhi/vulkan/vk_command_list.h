@@ -63,6 +63,7 @@ public:
     // --- defined in vk_command_list_ray_tracing.cpp (ray-tracing helper) ---
     void setRayTracingState(const StateObjectHandle& stateObject, const ShaderTableHandle& table) override;
     void dispatchRays(uint32_t width, uint32_t height = 1, uint32_t depth = 1) override;
+    void dispatchRaysIndirect(const BufferHandle& args, uint64_t offset = 0) override;
     void buildBottomLevel(const AccelStructHandle& blas, bool update = false) override;
     void buildTopLevel(const AccelStructHandle& tlas, std::span<const InstanceDesc> instances,
                        bool update = false) override;

@@ -80,6 +80,28 @@ void VulkanCommandList::dispatchRays(uint32_t width, uint32_t height, uint32_t d
                                    width, height, depth);
 }
 
+void VulkanCommandList::dispatchRaysIndirect(const BufferHandle& args, uint64_t offset) {
+    const RayTracingState& state = rayTracingState();
+    if (!state.shaderTable) {
+        recordError("dispatchRaysIndirect: no setRayTracingState before it");
+        return;
+    }
+    if (!context().capabilities.rayTracingIndirect) {
+        recordError("dispatchRaysIndirect: the device has no rayTracingPipelineTraceRaysIndirect");
+        return;
+    }
+    if (!args || !hasAny(args->desc().usage, BufferUsage::Indirect) || offset % 4 != 0 ||
+        offset + 12 > args->desc().byteSize) {
+        recordError("dispatchRaysIndirect: the argument buffer needs BufferUsage::Indirect and 12 bytes at a "
+                    "4-aligned offset");
+        return;
+    }
+    retain(args);
+    const VulkanShaderTable& table = *toVk(state.shaderTable);
+    context().fn.vkCmdTraceRaysIndirectKHR(commandBuffer(), &table.rayGen(), &table.miss(), &table.hitGroup(),
+                                           &table.callable(), args->deviceAddress() + offset);
+}
+
 void VulkanCommandList::buildBottomLevel(const AccelStructHandle& blas, bool update) {
     if (!blas || blas->desc().isTopLevel) {
         recordError("buildBottomLevel: null or top-level acceleration structure");

@@ -35,6 +35,7 @@ Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts
     caps.rayTracingPipeline = parts.rayTracingPipeline;
     caps.rayQuery = parts.rayQuery;
     caps.shaderFloatAtomicAdd = parts.floatAtomicAdd;
+    caps.rayTracingIndirect = parts.rayTracingPipeline && parts.traceRaysIndirect;
     if (parts.rayTracingPipeline) {
         const auto& rp = context.rayTracingProperties;
         caps.shaderGroupHandleSize = rp.shaderGroupHandleSize;
@@ -72,6 +73,7 @@ Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts
         CAUSTICS_LOAD(vkCreateRayTracingPipelinesKHR);
         CAUSTICS_LOAD(vkGetRayTracingShaderGroupHandlesKHR);
         CAUSTICS_LOAD(vkCmdTraceRaysKHR);
+        CAUSTICS_LOAD(vkCmdTraceRaysIndirectKHR);
 #undef CAUSTICS_LOAD
     }
 

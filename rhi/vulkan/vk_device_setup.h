@@ -12,6 +12,7 @@ struct EnabledDeviceParts {
     bool rayTracingPipeline = false;
     bool rayQuery = false;
     bool floatAtomicAdd = false;   // buffer and image float32 atomicAdd
+    bool traceRaysIndirect = false;   // rayTracingPipelineTraceRaysIndirect
 };
 
 // Needs context.physicalDevice, device and queue set. `getDeviceProcAddr` loads the entry points:

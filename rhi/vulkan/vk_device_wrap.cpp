@@ -71,6 +71,7 @@ Result<DeviceHandle> wrapVulkanDevice(const VulkanDeviceImport& desc) {
     parts.rayTracingPipeline =
         parts.accelStruct && has(ext, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME) && features.rayTracingPipeline;
     parts.rayQuery = parts.accelStruct && has(ext, VK_KHR_RAY_QUERY_EXTENSION_NAME) && features.rayQuery;
+    parts.traceRaysIndirect = parts.rayTracingPipeline && features.rayTracingPipelineTraceRaysIndirect;
     parts.floatAtomicAdd = has(ext, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME) &&
                            features.shaderBufferFloat32AtomicAdd && features.shaderImageFloat32AtomicAdd;
     CAUSTICS_CHECK(vulkan::finishDeviceSetup(*context, parts, getDeviceProcAddr));

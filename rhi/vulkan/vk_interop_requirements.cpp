@@ -72,6 +72,8 @@ VulkanEnabledFeatures readVulkanFeatureChain(const void* chain) {
                 break;
             case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR:
                 on(f.rayTracingPipeline, as<VkPhysicalDeviceRayTracingPipelineFeaturesKHR>(link).rayTracingPipeline);
+                on(f.rayTracingPipelineTraceRaysIndirect,
+                   as<VkPhysicalDeviceRayTracingPipelineFeaturesKHR>(link).rayTracingPipelineTraceRaysIndirect);
                 break;
             case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR:
                 on(f.rayQuery, as<VkPhysicalDeviceRayQueryFeaturesKHR>(link).rayQuery);

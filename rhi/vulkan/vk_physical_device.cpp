@@ -181,6 +181,7 @@ Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc) {
     e.v13.maintenance4 = s.v13.maintenance4;
     e.as.accelerationStructure = asExt;
     e.rt.rayTracingPipeline = rtExt;
+    e.rt.rayTracingPipelineTraceRaysIndirect = rtExt && s.rt.rayTracingPipelineTraceRaysIndirect;
     e.rayQuery.rayQuery = rayQuery;
     e.atomicFloat.shaderBufferFloat32AtomicAdd = s.atomicFloat.shaderBufferFloat32AtomicAdd;
     e.atomicFloat.shaderImageFloat32AtomicAdd = s.atomicFloat.shaderImageFloat32AtomicAdd;
@@ -207,7 +208,8 @@ Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc) {
     return finishDeviceSetup(context,
                              {asExt, rtExt, rayQuery,
                               atomicFloat && s.atomicFloat.shaderBufferFloat32AtomicAdd &&
-                                  s.atomicFloat.shaderImageFloat32AtomicAdd},
+                                  s.atomicFloat.shaderImageFloat32AtomicAdd,
+                              rtExt && s.rt.rayTracingPipelineTraceRaysIndirect},
                              vkGetDeviceProcAddr);
 }
 

@@ -5,8 +5,10 @@ namespace caustics::bench {
 std::span<const BenchMode> benchModes() {
     static const BenchMode kModes[] = {
         {"rays", "primary and incoherent rays against a procedural ~1M-triangle mesh", runRaysMode},
-        {"caustics", "per-pass GPU times of the caustic passes on the built-in scenes", runCausticsMode},
+        {"caustics", "per-pass GPU times and counters of the caustic passes on the built-in scenes", runCausticsMode},
         {"frame", "per-pass GPU times of the whole CausticsModule frame on the built-in scenes", runFrameMode},
+        {"sweep", "the paper's section-4 sweeps (lights, rays per texel, depth, map and image size) as CSV under --out",
+         runSweepMode},
     };
     return kModes;
 }

@@ -18,5 +18,6 @@ std::span<const BenchMode> benchModes();
 int runRaysMode(const BenchOptions& options);
 int runCausticsMode(const BenchOptions& options);
 int runFrameMode(const BenchOptions& options);
+int runSweepMode(const BenchOptions& options);
 
 }  // namespace caustics::bench

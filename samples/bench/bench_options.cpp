@@ -1,26 +1,108 @@
 #include "bench_options.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <string_view>
 
 #include "bench_modes.h"
+#include "caustics/caustics_settings.h"
 
 namespace caustics::bench {
 namespace {
 
-Result<uint32_t> parseCount(std::string_view flag, std::string_view text) {
-    uint32_t value = 0;
+Result<uint32_t> parseCount(std::string_view flag, std::string_view text, uint32_t lo, uint32_t hi) {
+    uint64_t value = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size() || value == 0)
-        return makeError(std::string(flag) + ": expected a positive integer, got '" + std::string(text) + "'");
+    if (ec != std::errc() || end != text.data() + text.size())
+        return makeError(std::string(flag) + ": expected a whole number, got '" + std::string(text) + "'");
+    if (value < lo || value > hi)
+        return makeError(std::string(flag) + ": " + std::string(text) + " is outside [" + std::to_string(lo) + ", " +
+                         std::to_string(hi) + "]");
+    return uint32_t(value);
+}
+
+Result<float> parsePositive(std::string_view flag, std::string_view text, float hi) {
+    std::string s(text);
+    char* end = nullptr;
+    float value = std::strtof(s.c_str(), &end);
+    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(value))
+        return makeError(std::string(flag) + ": expected a number, got '" + s + "'");
+    if (!(value > 0.0f) || value > hi)
+        return makeError(std::string(flag) + ": " + s + " is outside (0, " + std::to_string(int(hi)) + "]");
     return value;
+}
+
+Status setOption(BenchOptions& o, std::string_view flag, std::string_view value) {
+    if (flag == "--backend") {
+        auto backend = rhi::parseBackend(value);
+        if (!backend) return makeError("--backend: expected vulkan or d3d12, got '" + std::string(value) + "'");
+        o.backend = *backend;
+    } else if (flag == "--width") {
+        CAUSTICS_TRY(o.width, parseCount(flag, value, 1, kMaxBenchImageSide));
+    } else if (flag == "--height") {
+        CAUSTICS_TRY(o.height, parseCount(flag, value, 1, kMaxBenchImageSide));
+    } else if (flag == "--frames") {
+        CAUSTICS_TRY(o.frames, parseCount(flag, value, 1, kMaxBenchFrames));
+    } else if (flag == "--warmup") {
+        CAUSTICS_TRY(o.warmupFrames, parseCount(flag, value, 0, kMaxBenchFrames));
+    } else if (flag == "--triangles") {
+        CAUSTICS_TRY(o.triangles, parseCount(flag, value, 12, kMaxBenchTriangles));
+    } else if (flag == "--scene" || flag == "--scenes") {
+        if (value.empty()) return makeError(std::string(flag) + ": empty scene list");
+        o.scenes = std::string(value);
+    } else if (flag == "--extra-lights") {
+        CAUSTICS_TRY(o.extraLights, parseCount(flag, value, 0, kMaxBenchExtraLights));
+    } else if (flag == "--rays-per-texel") {
+        CAUSTICS_TRY(o.raysPerTexel, parsePositive(flag, value, CausticsSettings::kMaxRaysPerTexel));
+    } else if (flag == "--depth") {
+        CAUSTICS_TRY(o.maxDepth, parseCount(flag, value, 1, CausticsSettings::kMaxSpecularDepth));
+    } else if (flag == "--map-size") {
+        CAUSTICS_TRY(o.mapResolution, parseCount(flag, value, 1, CausticsSettings::kMaxMapResolution));
+    } else if (flag == "--filter") {
+        if (value != "on" && value != "off") return makeError("--filter: expected on or off, got '" + std::string(value) + "'");
+        o.filter = value == "on";
+    } else if (flag == "--out") {
+        if (value.empty()) return makeError("--out: empty folder name");
+        o.outDir = std::string(value);
+    } else if (flag == "--sweeps") {
+        std::string list(value);
+        for (size_t start = 0; start <= list.size();) {
+            size_t end = std::min(list.find(',', start), list.size());
+            const std::string item = list.substr(start, end - start);
+            if (item != "lights" && item != "rays" && item != "depth" && item != "map" && item != "image")
+                return makeError("--sweeps: '" + item + "' is not one of lights, rays, depth, map, image");
+            start = end + 1;
+        }
+        o.sweeps = list;
+    } else if (flag == "--reference-frames") {
+        CAUSTICS_TRY(o.referenceFrames, parseCount(flag, value, 1, 4096));
+    } else {
+        return makeError("unknown option '" + std::string(flag) + "'");
+    }
+    return okStatus();
 }
 
 }  // namespace
 
 std::string benchUsage() {
-    std::string text = "usage: caustics-bench <mode> [--width W] [--height H] [--frames N] [--triangles T]\n"
-                       "                      [--backend vulkan|d3d12] [--validation]\nmodes:\n";
+    std::string text =
+        "usage: caustics-bench <mode> [options]\n"
+        "  --width W --height H        image size (default 1920x1080, at most 16384)\n"
+        "  --frames N --warmup N       timed frames (median reported) and warm-up frames\n"
+        "  --backend vulkan|d3d12      --validation: Vulkan validation layers on\n"
+        "  --triangles T               rays mode: mesh size (12 .. 67108864)\n"
+        "  --scene LIST                comma list of built-in scenes (default builtin,builtin:atrium)\n"
+        "  --extra-lights N            caustic spot lights added around the specular objects (0 .. 32)\n"
+        "  --rays-per-texel R          (0, 256], fractional allowed (default 1)\n"
+        "  --depth D                   specular events per caustic path, 1 .. 31 (default 4)\n"
+        "  --map-size N                caustic map side, 1 .. 8192 (default 512)\n"
+        "  --filter on|off             caustic filter (default off, as the paper measured)\n"
+        "  --out DIR                   sweep: folder for the CSV files (created)\n"
+        "  --reference-frames N        sweep: frames of 16 rays per texel in the quality reference (default 16)\n"
+        "  --sweeps LIST               sweep: any of lights,rays,depth,map,image (default all)\n"
+        "modes:\n";
     for (const BenchMode& mode : benchModes()) text += "  " + std::string(mode.name) + "  " + mode.summary + "\n";
     return text;
 }
@@ -36,21 +118,9 @@ Result<BenchOptions> parseBenchOptions(int argc, char** argv) {
             continue;
         }
         if (i + 1 >= argc) return makeError(std::string(flag) + ": missing value");
-        const std::string_view value = argv[++i];
-        if (flag == "--backend") {
-            auto backend = rhi::parseBackend(value);
-            if (!backend) return makeError("--backend: expected vulkan or d3d12, got '" + std::string(value) + "'");
-            options.backend = *backend;
-            continue;
-        }
-        uint32_t* target = flag == "--width"       ? &options.width
-                           : flag == "--height"    ? &options.height
-                           : flag == "--frames"    ? &options.frames
-                           : flag == "--triangles" ? &options.triangles
-                                                   : nullptr;
-        if (!target) return makeError("unknown option '" + std::string(flag) + "'");
-        CAUSTICS_TRY(*target, parseCount(flag, value));
+        CAUSTICS_CHECK(setOption(options, flag, argv[++i]));
     }
+    if (options.mode == "sweep" && options.outDir.empty()) return makeError("sweep: --out DIR is required");
     return options;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Command line of caustics-bench: `caustics-bench <mode> [--width W --height H --frames N
-// --triangles T --backend vulkan|d3d12 --validation]`.
+// Command line of caustics-bench (see benchUsage()). Every value is range-checked here with a message
+// naming the flag and the limit, so no mode meets an absurd size (no uncaught exception, no
+// std::bad_alloc after minutes).
 #include <cstdint>
 #include <string>
 
@@ -14,10 +15,26 @@ struct BenchOptions {
     uint32_t height = 1080;
     uint32_t frames = 30;           // timed frames per measurement (the median is reported)
     uint32_t warmupFrames = 2;
-    uint32_t triangles = 1000000;
+    uint32_t triangles = 1000000;   // rays mode
     rhi::Backend backend = rhi::Backend::Vulkan;
     bool validation = false;
+    // caustics / frame / sweep modes (paper section 4 defaults).
+    std::string scenes = "builtin,builtin:atrium";   // comma list (sweep: the first one)
+    uint32_t extraLights = 0;       // caustic spot lights added around the specular objects
+    float raysPerTexel = 1.0f;
+    uint32_t maxDepth = 4;
+    uint32_t mapResolution = 512;
+    bool filter = false;            // the paper measured with the filter off
+    std::string outDir;             // sweep: where the CSV files go
+    uint32_t referenceFrames = 16;  // sweep: frames of the converged reference (x 16 rays per texel)
+    std::string sweeps = "lights,rays,depth,map,image";   // sweep: which parameters to vary
 };
+
+// Limits (inclusive) beyond which a flag is refused.
+inline constexpr uint32_t kMaxBenchImageSide = 16384;
+inline constexpr uint32_t kMaxBenchTriangles = 1u << 26;   // 64 M: ~1.6 GB of mesh on the host
+inline constexpr uint32_t kMaxBenchFrames = 100000;
+inline constexpr uint32_t kMaxBenchExtraLights = 32;
 
 Result<BenchOptions> parseBenchOptions(int argc, char** argv);
 std::string benchUsage();

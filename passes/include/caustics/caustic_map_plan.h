@@ -7,7 +7,8 @@
 //               coverage loss; a cube map would waste 5/6 of its texels on most frames)
 //   directional orthographic, fitted laterally to the specular sphere, depth range to the scene
 // A light whose frustum contains no specular instance (per-instance bounding spheres) is skipped
-// before anything is rasterised or traced.
+// before anything is rasterised or traced, and each map rasterises only the instances whose bounding
+// sphere touches its frustum (the forward pass reads nothing else; docs/caustics.md, "Cost").
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,6 +44,7 @@ struct SpecularBounds {
     glm::vec3 centre{0.0f};
     float radius = 0.0f;
     std::vector<glm::vec4> instanceSpheres;   // xyz centre, w radius, one per specular instance
+    std::vector<glm::vec4> allInstanceSpheres;   // one per scene instance (radius < 0: no geometry)
     glm::vec3 sceneCentre{0.0f};
     float sceneRadius = 0.0f;
     bool empty() const { return instanceSpheres.empty(); }
@@ -53,7 +55,13 @@ struct CausticMapPlan {
     std::vector<CausticMapGpu> maps;          // one per texture-array layer
     std::vector<uint32_t> skippedLights;      // scene light indices without a map
     std::vector<std::string> skipReasons;     // parallel to skippedLights
+    std::vector<std::vector<uint32_t>> drawnInstances;   // parallel to maps: instances inside its frustum
 };
+
+// Does the bounding sphere (xyz centre, w radius) touch the volume map m rasterises? Perspective: the
+// cone circumscribing the square frustum; orthographic: the cylinder around the square, in front of
+// the map plane. Conservative: a `true` may still rasterise nothing.
+bool mapFrustumTouchesSphere(const CausticMapGpu& m, glm::vec4 sphere);
 
 CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& bounds);
 

@@ -35,7 +35,12 @@ inline constexpr uint32_t kStatSplats = 1;             // first-type splats that
 inline constexpr uint32_t kStatGatherHits = 2;         // (hit, sphere) pairs accumulated
 inline constexpr uint32_t kStatSpheres = 3;            // backward hits that became spheres
 inline constexpr uint32_t kStatRaysPerLight = 4;
-inline constexpr uint32_t kStatCount = kStatRaysPerLight + kMaxCausticLights;
+// Cost counters of the forward pass (docs/caustics.md, "Cost"): ray segments traced (traceRay calls,
+// not paths), map texels that emit (specular 3x3 neighbourhood) and map texels the dispatch covers.
+inline constexpr uint32_t kStatForwardSegments = kStatRaysPerLight + kMaxCausticLights;
+inline constexpr uint32_t kStatEmitterTexels = kStatForwardSegments + 1;
+inline constexpr uint32_t kStatDispatchedTexels = kStatForwardSegments + 2;
+inline constexpr uint32_t kStatCount = kStatForwardSegments + 3;
 
 // One stored forward diffuse hit (std430, 80 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
 // It carries the photon's flux, its incoming direction and the receiver's glTF BRDF parameters, so a
@@ -106,7 +111,7 @@ struct CausticOutputs {
     rg::RgBuffer hits;          // CausticHit[maxStoredHits]
     rg::RgBuffer stats;         // uint32[kStatCount]
     rg::RgBuffer spheres;       // CausticSphere[W x H] (invalid when the second type did not run)
-    rg::RgTexture mapPositions; // RGBA32F array, one layer per planned map (invalid if none)
+    rg::RgTexture mapObjectIds; // R32_UINT array, one layer per planned map (instance + 1; invalid if none)
     CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped
     bool floatAtomics = true;   // false: the buffers hold fixed-point uint (kFixedPointScale)
 };

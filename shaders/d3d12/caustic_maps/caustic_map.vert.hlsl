@@ -15,9 +15,7 @@ ConstantBuffer<DrawParameters> drawParams : register(b0, space998);
 
 struct CausticMapVaryings {
     float4 position : SV_Position;
-    float3 worldPos : TEXCOORD0;
-    float3 normal : TEXCOORD1;
-    nointerpolation uint instance : TEXCOORD2;
+    nointerpolation uint instance : TEXCOORD0;
 };
 
 CausticMapVaryings main(uint vertexIndex : SV_VertexID, uint instanceId : SV_InstanceID) {
@@ -26,8 +24,6 @@ CausticMapVaryings main(uint vertexIndex : SV_VertexID, uint instanceId : SV_Ins
     uint v = inst.firstVertex + sceneIndex(inst.firstIndex + vertexIndex);
     float4 world = mat4Mul(inst.objectToWorld, float4(scenePosition(v), 1.0f));
     CausticMapVaryings o;
-    o.worldPos = world.xyz;
-    o.normal = mat3Mul(inst.normalToWorld, sceneVertex(v).normal);
     o.instance = instance;
     o.position = vulkanToD3DClip(mat4Mul(loadCausticMap(maps, pc.mapIndex).viewProj, world));
     return o;

@@ -1,18 +1,19 @@
 // Forward caustic trace (paper 3.2, Figure 4; mirror of shaders/vulkan/forward_trace/forward_body.glsl):
-// one launch per (map texel x sample, map row, map layer). Shared by forward.rgen.hlsl and
-// forward_fixed.rgen.hlsl.
+// one launch per (emitting map texel, sample) of the caustics.emitters list. Shared by forward.rgen.hlsl
+// and forward_fixed.rgen.hlsl.
 #include "scene/scene.hlsli"
 #include "scene/camera.hlsli"
 #include "common/emission.h"
 #include "common/rng.h"
 #include "common/volume.h"
 #include "caustic_maps/caustic_map.hlsli"
+#include "caustic_maps/emitter_list.hlsli"
 #include "forward_trace/caustic_hit.hlsli"
 
 struct CameraBlock { CameraConstants camera; };
 ConstantBuffer<CameraBlock> cameraBlock : register(b0, space1);
 ByteAddressBuffer maps : register(t1, space1);
-Texture2DArray<uint> mapObjectIds : register(t2, space1);
+ByteAddressBuffer emitters : register(t2, space1);
 Texture2D<float4> gLinearDepth : register(t3, space1);
 Texture2D<uint> gObjectId : register(t4, space1);
 RWByteAddressBuffer hits : register(u6, space1);
@@ -35,13 +36,6 @@ ConstantBuffer<Push> pc : register(b0, space999);
 
 void statAdd(uint slot, uint value, out uint original) { stats.InterlockedAdd(4u * slot, value, original); }
 void statAdd(uint slot, uint value) { stats.InterlockedAdd(4u * slot, value); }
-
-bool texelIsSpecular(int2 t, int layer) {
-    int n = int(pc.mapSize) - 1;
-    uint id = mapObjectIds.Load(int4(clamp(t, int2(0, 0), int2(n, n)), layer, 0));
-    if (id == 0u) return false;
-    return sceneMaterialIsSpecular(sceneMaterial(sceneInstance(id - 1u).material));
-}
 
 // The receiver's BRDF (shaders/common/bsdf.h). A specular material reaches here only through its
 // diffuse layer, whose Fresnel/metallic/transmission weights the sampled event already applied.
@@ -75,15 +69,14 @@ void splatFirstType(CameraConstants camera, float3 x, float3 nFacing, uint objec
 void main() {
     CameraConstants camera = cameraBlock.camera;
     uint3 id = DispatchRaysIndex();
-    uint tx = id.x / pc.samplesPerTexel;
-    uint sampleIndex = id.x % pc.samplesPerTexel;
-    uint ty = id.y;
-    int layer = int(id.z);
+    if (all(id == uint3(0u, 0u, 0u))) statAdd(kStatDispatchedTexels, DispatchRaysDimensions().x);
+    if (id.x >= stats.Load(4u * kStatEmitterTexels)) return;
+    uint packed = emitters.Load(4u * id.x);
+    uint tx = emitterTexel(packed).x;
+    uint ty = emitterTexel(packed).y;
+    int layer = int(emitterLayer(packed));
+    uint sampleIndex = id.y;
     CausticMap m = loadCausticMap(maps, uint(layer));
-    bool specular = false;
-    for (int dy = -1; dy <= 1 && !specular; ++dy)
-        for (int dx = -1; dx <= 1 && !specular; ++dx) specular = texelIsSpecular(int2(tx, ty) + int2(dx, dy), layer);
-    if (!specular) return;
 
     Rng rng = rngCreate(ty * pc.mapSize + tx, m.light, sampleIndex, pc.frame);
     float emitProbability = clamp(pc.raysPerTexel - float(sampleIndex), 0.0f, 1.0f);
@@ -111,6 +104,7 @@ void main() {
     float3 sigma = (float3)0.0f;
     float3 throughput = (float3)1.0f;
     uint events = 0u;
+    uint segments = 0u;
     for (uint vertex = 0u; vertex <= pc.maxDepth + 1u; ++vertex) {
         TracePayload payload;
         payload.barycentrics = (float2)0.0f;
@@ -123,6 +117,7 @@ void main() {
         ray.Direction = dir;
         ray.TMax = 1.0e30f;
         TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 0, 0, ray, payload);
+        ++segments;
         if (payload.t < 0.0f) break;
         if (any(sigma != (float3)0.0f)) flux *= beerLambert(sigma, payload.t);
         SurfaceHit h = sceneSurfaceHit(payload.instance, payload.primitive, payload.barycentrics);
@@ -159,4 +154,5 @@ void main() {
         splatFirstType(camera, x, nFacing, h.objectId, flux, -dir, brdf);
         break;
     }
+    statAdd(kStatForwardSegments, segments);
 }

@@ -10,17 +10,13 @@
 layout(set = 1, binding = 0, std430) readonly buffer Maps { CausticMap maps[]; };
 layout(push_constant) uniform Push { uint mapIndex; } pc;
 
-layout(location = 0) out vec3 outPosition;
-layout(location = 1) out vec3 outNormal;
-layout(location = 2) flat out uint outInstance;
+layout(location = 0) flat out uint outInstance;
 
 void main() {
     uint instance = uint(gl_InstanceIndex);
     GpuInstance inst = sceneInstances[instance];
     uint v = inst.firstVertex + sceneIndices[inst.firstIndex + uint(gl_VertexIndex)];
     vec4 world = inst.objectToWorld * vec4(scenePosition(v), 1.0);
-    outPosition = world.xyz;
-    outNormal = mat3(inst.normalToWorld) * sceneVertices[v].normal;
     outInstance = instance;
     gl_Position = maps[pc.mapIndex].viewProj * world;
 }

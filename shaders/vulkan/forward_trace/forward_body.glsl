@@ -1,5 +1,6 @@
-// Forward caustic trace (paper 3.2, Figure 4): one launch per (map texel x sample, map row, map layer).
-// Shared by forward.rgen (float atomics) and forward_fixed.rgen (fixed-point atomics).
+// Forward caustic trace (paper 3.2, Figure 4): one launch per (emitting map texel, sample), the texels
+// listed by caustics.emitters (caustic_maps/emitters.comp). Shared by forward.rgen (float atomics) and
+// forward_fixed.rgen (fixed-point atomics).
 #extension GL_EXT_ray_tracing : require
 #extension GL_EXT_samplerless_texture_functions : require
 #include "scene/scene.glsl"
@@ -8,11 +9,12 @@
 #include "common/rng.h"
 #include "common/volume.h"
 #include "caustic_maps/caustic_map.glsl"
+#include "caustic_maps/emitter_list.glsl"
 #include "forward_trace/caustic_hit.glsl"
 
 layout(set = 1, binding = 0) uniform CameraBlock { CameraConstants camera; };
 layout(set = 1, binding = 1, std430) readonly buffer Maps { CausticMap maps[]; };
-layout(set = 1, binding = 2) uniform utexture2DArray mapObjectIds;
+layout(set = 1, binding = 2, std430) readonly buffer Emitters { uint emitters[]; };
 layout(set = 1, binding = 3) uniform texture2D gLinearDepth;
 layout(set = 1, binding = 4) uniform utexture2D gObjectId;
 layout(set = 1, binding = 6, std430) buffer Hits { CausticHit hits[]; };
@@ -33,13 +35,6 @@ layout(push_constant) uniform Push {
 } pc;
 
 layout(location = 0) rayPayloadEXT TracePayload payload;
-
-bool texelIsSpecular(ivec2 t, int layer) {
-    int n = int(pc.mapSize) - 1;
-    uint id = texelFetch(mapObjectIds, ivec3(clamp(t, ivec2(0), ivec2(n)), layer), 0).r;
-    if (id == 0u) return false;
-    return sceneMaterialIsSpecular(sceneMaterials[sceneInstances[id - 1u].material]);
-}
 
 // The receiver's BRDF (shaders/common/bsdf.h). A specular material reaches here only through its
 // diffuse layer, whose Fresnel/metallic/transmission weights the sampled event already applied.
@@ -74,17 +69,15 @@ void splatFirstType(CausticHit hit) {
 
 void main() {
     uvec3 id = gl_LaunchIDEXT;
-    uint tx = id.x / pc.samplesPerTexel;
-    uint sampleIndex = id.x % pc.samplesPerTexel;
-    uint ty = id.y;
-    int layer = int(id.z);
+    if (id == uvec3(0u)) atomicAdd(stats[kStatDispatchedTexels], gl_LaunchSizeEXT.x);
+    // A direct (not indirect) dispatch covers the list's capacity: launches past its length idle.
+    if (id.x >= stats[kStatEmitterTexels]) return;
+    uint packed = emitters[id.x];
+    uint tx = emitterTexel(packed).x;
+    uint ty = emitterTexel(packed).y;
+    int layer = int(emitterLayer(packed));
+    uint sampleIndex = id.y;
     CausticMap m = maps[layer];
-    // Only texels whose 3x3 neighbourhood sees a specular surface emit: the ray below finds the exact
-    // sub-texel hit, the neighbourhood keeps silhouette texels whose centre misses the object.
-    bool specular = false;
-    for (int dy = -1; dy <= 1 && !specular; ++dy)
-        for (int dx = -1; dx <= 1 && !specular; ++dx) specular = texelIsSpecular(ivec2(tx, ty) + ivec2(dx, dy), layer);
-    if (!specular) return;
 
     Rng rng = rngCreate(ty * pc.mapSize + tx, m.light, sampleIndex, pc.frame);
     // Fractional rays per texel: sample s of a texel is emitted with probability clamp(r - s, 0, 1),
@@ -114,9 +107,11 @@ void main() {
     vec3 sigma = vec3(0.0);
     vec3 throughput = vec3(1.0);
     uint events = 0u;
+    uint segments = 0u;   // one atomic per path, not per segment (kStatForwardSegments)
     for (uint vertex = 0u; vertex <= pc.maxDepth + 1u; ++vertex) {
         payload.t = -1.0;
         traceRayEXT(sceneTlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 0, 0, origin, 0.0, dir, 1.0e30, 0);
+        ++segments;
         if (payload.t < 0.0) break;
         if (sigma != vec3(0.0)) flux *= beerLambert(sigma, payload.t);
         SurfaceHit h = sceneSurfaceHit(payload.instance, payload.primitive, payload.barycentrics);
@@ -152,4 +147,5 @@ void main() {
         splatFirstType(hit);
         break;
     }
+    atomicAdd(stats[kStatForwardSegments], segments);
 }

@@ -70,6 +70,7 @@ public:
     void drawIndexed(uint32_t, uint32_t, uint32_t, int32_t, uint32_t) override {}
     void setRayTracingState(const rhi::StateObjectHandle&, const rhi::ShaderTableHandle&) override {}
     void dispatchRays(uint32_t, uint32_t, uint32_t) override {}
+    void dispatchRaysIndirect(const rhi::BufferHandle&, uint64_t) override {}
     void buildBottomLevel(const rhi::AccelStructHandle&, bool) override {}
     void buildTopLevel(const rhi::AccelStructHandle&, std::span<const rhi::InstanceDesc>, bool) override {}
     void buildTopLevelFromBuffer(const rhi::AccelStructHandle&, const rhi::BufferHandle&, uint64_t, uint32_t,

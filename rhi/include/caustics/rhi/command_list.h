@@ -129,6 +129,11 @@ public:
     // Ray tracing.
     virtual void setRayTracingState(const StateObjectHandle& stateObject, const ShaderTableHandle& table) = 0;
     virtual void dispatchRays(uint32_t width, uint32_t height = 1, uint32_t depth = 1) = 0;
+    // As dispatchRays, with the grid read by the GPU: three uint32 (width, height, depth) at `offset`
+    // of `args` (BufferUsage::Indirect, in ResourceState::IndirectArgument; offset a multiple of 4).
+    // Needs Capabilities::rayTracingIndirect. Vulkan: vkCmdTraceRaysIndirectKHR; D3D12: ExecuteIndirect
+    // with a DispatchRays command signature (the backend adds the shader-table part of the argument).
+    virtual void dispatchRaysIndirect(const BufferHandle& args, uint64_t offset = 0) = 0;
     // Bottom level: geometries come from the AS's own desc. `update` refits (needs AllowUpdate).
     virtual void buildBottomLevel(const AccelStructHandle& blas, bool update = false) = 0;
     // Top level from host instances (uploaded by the command list) or from a GPU buffer of InstanceDesc.

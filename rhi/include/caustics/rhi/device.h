@@ -38,6 +38,7 @@ struct Capabilities {
     bool accelerationStructure = false;
     bool rayQuery = false;
     bool shaderFloatAtomicAdd = false;   // atomicAdd on float storage buffers and images
+    bool rayTracingIndirect = false;     // ICommandList::dispatchRaysIndirect
     uint32_t shaderGroupHandleSize = 32;
     uint32_t shaderGroupHandleAlignment = 32;
     uint32_t shaderGroupBaseAlignment = 64;

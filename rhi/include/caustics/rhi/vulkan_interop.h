@@ -47,6 +47,7 @@ struct VulkanEnabledFeatures {
     bool accelerationStructure = false;
     bool rayTracingPipeline = false;
     bool rayQuery = false;
+    bool rayTracingPipelineTraceRaysIndirect = false;   // optional: ICommandList::dispatchRaysIndirect
     // Optional: without both the module takes its fixed-point accumulation path.
     bool shaderBufferFloat32AtomicAdd = false;
     bool shaderImageFloat32AtomicAdd = false;

@@ -1,0 +1,189 @@
+// `sweep` mode: the paper's section-4 measurements (Figures 9, 11, 13) and more, as CSV under --out:
+//   timings.csv  one row per run: frame and per-pass medians and the caustic counters, varying
+//                lights (extra ring lights 0..8, camera on the caustics and turned away: Figure 9),
+//                rays per texel (Figure 11), depth (Figure 13), map size and image size
+//   memory.csv   every caustic transient of each run and its size
+//   quality.csv  relative L1 of the caustic image against a converged reference (16 rays per texel x
+//                --reference-frames frames, unfiltered) next to the time, filter off and on
+// Every other setting stays at the flags' values (paper defaults). scripts/plot_bench.py plots them.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <tuple>
+
+#include "bench_gpu.h"
+#include "bench_measure.h"
+#include "bench_modes.h"
+
+namespace caustics::bench {
+namespace {
+
+struct Run {
+    std::string sweep, value;
+    BenchView view = BenchView::Visible;
+    uint32_t extraLights = 0;
+    uint32_t width = 0, height = 0;
+    CausticsSettings settings;
+    const std::vector<float>* reference = nullptr;   // quality row against it when set
+};
+
+class SweepWriter {
+public:
+    explicit SweepWriter(const std::string& dir)
+        : timings_(dir + "/timings.csv"), memory_(dir + "/memory.csv"), quality_(dir + "/quality.csv") {
+        timings_ << "sweep,value,view,scene,width,height,lights,maps,map_size,rays_per_texel,depth,filter,frame_ms,"
+                    "caustics_ms,maps_ms,emitters_ms,forward_ms,backward_ms,spheres_ms,gather_ms,filter_ms,photons,"
+                    "texels_emitting,texels_dispatched,segments,spheres,stored_hits,hits_offered,overflow,"
+                    "transient_bytes,transient_heap_bytes\n";
+        memory_ << "sweep,value,view,resource,bytes\n";
+        quality_ << "sweep,value,rays_per_texel,depth,filter,caustics_ms,frame_ms,relative_l1\n";
+    }
+    bool ok() const { return timings_.good() && memory_.good() && quality_.good(); }
+
+    void write(const Run& r, const scene::Scene& sc, const Measurement& m) {
+        const CausticsSettings& s = r.settings;
+        uint64_t transientBytes = 0;
+        for (const TransientMemory& t : m.transients) {
+            transientBytes += t.bytes;
+            memory_ << r.sweep << ',' << r.value << ',' << viewName(r.view) << ',' << t.name << ',' << t.bytes << '\n';
+        }
+        std::string sceneName = sc.name;   // plain CSV: no quoting needed
+        for (char& c : sceneName)
+            if (c == ',' || c == '"') c = ';';
+        timings_ << r.sweep << ',' << r.value << ',' << viewName(r.view) << ',' << sceneName << ',' << r.width << ','
+                 << r.height << ',' << sc.lights.size() << ',' << m.maps << ',' << s.mapResolution << ','
+                 << s.raysPerTexel << ',' << s.maxSpecularDepth << ',' << (s.filter ? "on" : "off") << ',' << m.frameMs
+                 << ',' << m.causticsMs << ',' << m.passTime("caustics.maps") << ',' << m.passTime("caustics.emitters")
+                 << ',' << m.passTime("caustics.forward") << ',' << m.passTime("caustics.backward") << ','
+                 << m.passTime("caustics.spheres") << ',' << m.passTime("caustics.gather") << ','
+                 << m.passTime("caustics.temporal") + m.passTime("caustics.atrous") + m.passTime("caustics.history")
+                 << ',' << m.photons << ',' << m.emitterTexels << ',' << m.dispatchedTexels << ',' << m.segments << ','
+                 << m.spheres << ',' << m.storedHits << ',' << m.hitAttempts << ',' << (m.hitAttempts > m.storedHits)
+                 << ',' << transientBytes << ',' << m.transientHeapBytes << '\n';
+        if (r.reference)
+            quality_ << r.sweep << ',' << r.value << ',' << s.raysPerTexel << ',' << s.maxSpecularDepth << ','
+                     << (s.filter ? "on" : "off") << ',' << m.causticsMs << ',' << m.frameMs << ','
+                     << relativeL1(m.caustics, *r.reference) << '\n';
+        timings_.flush();
+        memory_.flush();
+        quality_.flush();
+    }
+
+private:
+    std::ofstream timings_, memory_, quality_;
+};
+
+bool wanted(const BenchOptions& o, const char* sweep) {
+    std::stringstream list(o.sweeps);
+    for (std::string item; std::getline(list, item, ',');)
+        if (item == sweep) return true;
+    return false;
+}
+
+template <typename T>
+std::string text(T v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+std::vector<Run> planRuns(const BenchOptions& o, const std::vector<float>* reference4, const std::vector<float>* reference16) {
+    const CausticsSettings base = benchSettings(o);
+    std::vector<Run> runs;
+    auto add = [&](const char* sweep, std::string value, const std::function<void(Run&)>& change) {
+        Run r{sweep, std::move(value), BenchView::Visible, o.extraLights, o.width, o.height, base, nullptr};
+        change(r);
+        runs.push_back(r);
+    };
+    if (wanted(o, "lights"))
+        for (BenchView view : {BenchView::Visible, BenchView::Away})
+            for (uint32_t extra : {0u, 1u, 2u, 4u, 8u})
+                add("lights", text(extra), [&](Run& r) { r.view = view; r.extraLights = extra; });
+    if (wanted(o, "rays"))
+        for (bool filter : {false, true})
+            for (float rays : {0.25f, 0.5f, 0.75f, 1.0f, 2.0f, 4.0f, 8.0f, 25.0f})
+                add("rays", text(rays), [&](Run& r) {
+                    r.settings.raysPerTexel = rays;
+                    r.settings.filter = filter;
+                    r.settings.maxSpecularDepth = 4;
+                    r.reference = reference4;
+                });
+    if (wanted(o, "depth"))
+        for (uint32_t depth : {1u, 2u, 3u, 4u, 8u, 16u})
+            add("depth", text(depth), [&](Run& r) {
+                r.settings.maxSpecularDepth = depth;
+                r.reference = reference16;
+            });
+    if (wanted(o, "map"))
+        for (uint32_t map : {256u, 512u, 1024u, 2048u})
+            add("map", text(map), [&](Run& r) { r.settings.mapResolution = map; });
+    if (wanted(o, "image"))
+        for (auto [w, h] : {std::pair{1280u, 720u}, {1920u, 1080u}, {2560u, 1440u}, {3840u, 2160u}})
+            add("image", text(w) + "x" + text(h), [&](Run& r) {
+                r.width = w;
+                r.height = h;
+            });
+    return runs;
+}
+
+int fail(const std::string& what) {
+    std::fprintf(stderr, "caustics-bench sweep: %s\n", what.c_str());
+    return 1;
+}
+
+}  // namespace
+
+int runSweepMode(const BenchOptions& o) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.outDir, ec);
+    if (ec) return fail("--out " + o.outDir + ": " + ec.message());
+    SweepWriter writer(o.outDir);
+    if (!writer.ok()) return fail("--out " + o.outDir + ": cannot write the CSV files there");
+    auto device = createBenchDevice(o);
+    if (!device) return fail(device.message());
+    const std::string sceneName = o.scenes.substr(0, o.scenes.find(','));
+    std::printf("caustics-bench sweep on %s, scene %s, %ux%u, writing %s/{timings,memory,quality}.csv\n",
+                device.value()->capabilities().adapterName.c_str(), sceneName.c_str(), o.width, o.height,
+                o.outDir.c_str());
+
+    // One session (scene + module) per number of extra lights; settings and image size change in it.
+    std::unique_ptr<BenchSession> session;
+    uint32_t sessionLights = ~0u;
+    auto sessionFor = [&](uint32_t extraLights) -> Result<BenchSession*> {
+        if (session && sessionLights == extraLights) return session.get();
+        session.reset();
+        CAUSTICS_TRY(scene::Scene sc, loadBenchScene(sceneName, extraLights));
+        CAUSTICS_TRY(session, BenchSession::create(device.value(), std::move(sc), benchSettings(o)));
+        sessionLights = extraLights;
+        return session.get();
+    };
+
+    // Converged references of the quality rows (depth 4 for the rays sweep, 16 for the depth sweep).
+    std::vector<float> reference4, reference16;
+    CausticsSettings refSettings = benchSettings(o);
+    for (auto [depth, out, sweep] : {std::tuple{4u, &reference4, "rays"}, {16u, &reference16, "depth"}}) {
+        if (!wanted(o, sweep)) continue;
+        refSettings.maxSpecularDepth = depth;
+        auto s = sessionFor(o.extraLights);
+        if (!s) return fail(s.message());
+        auto ref = causticReference(device.value(), *s.value(), refSettings, o.width, o.height, o.referenceFrames);
+        if (!ref) return fail("reference: " + ref.message());
+        *out = std::move(ref.value());
+    }
+
+    for (const Run& r : planRuns(o, &reference4, &reference16)) {
+        if (Status ok = r.settings.validate(); !ok) return fail(r.sweep + " " + r.value + ": " + ok.message());
+        auto s = sessionFor(r.extraLights);
+        if (!s) return fail(s.message());
+        auto m = measure(device.value(), *s.value(), r.settings, r.width, r.height, r.view, o, r.reference != nullptr);
+        if (!m) return fail(r.sweep + " " + r.value + ": " + m.message());
+        writer.write(r, s.value()->scene, m.value());
+        std::printf("  %-6s %-10s %-7s caustics %8.3f ms  frame %8.3f ms\n", r.sweep.c_str(), r.value.c_str(),
+                    viewName(r.view), m->causticsMs, m->frameMs);
+    }
+    return 0;
+}
+
+}  // namespace caustics::bench
