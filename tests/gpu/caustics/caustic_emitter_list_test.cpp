@@ -2,7 +2,9 @@
 // leave (docs/caustics.md, "Cost"), with the flux estimator unchanged.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "caustic_harness.h"
 #include "caustic_test_scene.h"
@@ -54,17 +56,20 @@ TEST_F(CausticEmitterList, AtLeastHalfOfTheDispatchedTexelsEmitOnTheBuiltInScene
     EXPECT_LE(r->stats[kStatForwardSegments], launched * (s.maxSpecularDepth + 2));
 }
 
-// The estimator divides each photon's flux by the rays per texel: the total first-type energy of the
-// glass-sphere scene is the same at 1 and at 0.5 rays per texel (each averaged over kSeeds frames
-// of different seeds). Measured on lavapipe (64x48, map 64, 8 seeds): the two means differ by 0.6 %,
-// the per-seed relative standard deviation is 2.1 % at r = 0.5 and 0 at r = 1 (whole rays per texel
-// launch the same photons); 4 standard errors of the r = 0.5 mean is 3 %: threshold 4 %.
-TEST_F(CausticEmitterList, FirstTypeEnergyIsTheSameAtHalfTheRaysPerTexel) {
-    constexpr uint32_t kSeeds = 8;
+// The forward grid is (listed texel, sample): at 2 rays per texel every listed texel launches sample 0
+// (the same photon as at 1 ray per texel, same random stream) and sample 1, each with half the flux.
+// The total first-type energy of the glass-sphere scene must be the same at 1 and 2 rays per texel
+// (each the mean of kSeeds frames of different seeds). Threshold: 4 standard errors of the ratio from
+// the per-seed spread measured in the same run, and the spread itself is bounded so that a noisy
+// estimator cannot pass. Printed numbers are in the test log (docs/caustics.md, "Cost that follows
+// the caustic work", has a measured run).
+TEST_F(CausticEmitterList, FirstTypeEnergyIsTheSameAtTwoRaysPerTexel) {
+    constexpr uint32_t kSeeds = 4;
     auto meanEnergy = [&](float raysPerTexel, double& relStd) {
         double sum = 0.0, sumSq = 0.0;
         for (uint32_t seed = 1; seed <= kSeeds; ++seed) {
             CausticsSettings s = smallSettings();
+            s.mapResolution = 96;
             s.raysPerTexel = raysPerTexel;
             s.seed = seed;
             auto r = run(smallGlassSphereScene(), obliqueCamera(), s);
@@ -74,16 +79,18 @@ TEST_F(CausticEmitterList, FirstTypeEnergyIsTheSameAtHalfTheRaysPerTexel) {
             sumSq += e * e;
         }
         const double mean = sum / kSeeds;
-        relStd = mean > 0.0 ? std::sqrt(std::max(0.0, sumSq / kSeeds - mean * mean)) / mean : 0.0;
+        relStd = mean > 0.0 ? std::sqrt(std::max(0.0, sumSq / kSeeds - mean * mean) * kSeeds / (kSeeds - 1)) / mean : 0.0;
         return mean;
     };
-    double stdFull = 0.0, stdHalf = 0.0;
-    const double full = meanEnergy(1.0f, stdFull);
-    const double half = meanEnergy(0.5f, stdHalf);
-    ASSERT_GT(full, 0.0);
-    std::printf("first-type energy: r=1 %.6g (rel std %.4f), r=0.5 %.6g (rel std %.4f), ratio %.4f\n", full, stdFull,
-                half, stdHalf, half / full);
-    EXPECT_NEAR(half / full, 1.0, 0.04);
+    double stdOne = 0.0, stdTwo = 0.0;
+    const double one = meanEnergy(1.0f, stdOne);
+    const double two = meanEnergy(2.0f, stdTwo);
+    ASSERT_GT(one, 0.0);
+    const double sigmaRatio = std::sqrt((stdOne * stdOne + stdTwo * stdTwo) / kSeeds);
+    std::printf("first-type energy: r=1 %.6g (rel std %.4f), r=2 %.6g (rel std %.4f), ratio %.4f, sigma %.4f\n",
+                one, stdOne, two, stdTwo, two / one, sigmaRatio);
+    EXPECT_LT(stdOne, 0.05);
+    EXPECT_NEAR(two / one, 1.0, 4.0 * sigmaRatio);
 }
 
 }  // namespace
