@@ -53,7 +53,7 @@ struct VulkanEnabledFeatures {
     bool shaderImageFloat32AtomicAdd = false;
 };
 
-// Reads a VkDeviceCreateInfo::pNext feature chain: VkPhysicalDeviceFeatures2, Vulkan11/12/13Features
+// Reads a VkDeviceCreateInfo::pNext feature chain: VkPhysicalDeviceVulkan12/13Features
 // and the per-extension structures (buffer device address, descriptor indexing, timeline semaphore,
 // host query reset, dynamic rendering, synchronization2, AS, RT pipeline, ray query, atomic float).
 // Device-free; unknown structures are skipped. `chain` may be any structure of the chain or null.
