@@ -76,7 +76,14 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         };
     });
 
+    // The gather's grid is the stored-hit count (clamped to the buffer), counted on the GPU.
+    const bool indirect = res.device->capabilities().rayTracingIndirect;
+    rg::RgBuffer gatherGrid;
+    if (indirect)
+        gatherGrid = addGridFromCountPass(graph, f, "caustics.gatherGrid", kStatStoredHitAttempts,
+                                          f.in->settings.maxStoredHits);
     graph.addPass("caustics.gather", [&](rg::PassBuilder& b) {
+        if (indirect) gatherGrid = b.read(gatherGrid, rg::Access::IndirectArgument);
         f.sphereTlas = b.read(f.sphereTlas, rg::Access::AccelStructTrace);
         f.spheres = b.read(f.spheres, rg::Access::SampledRead);
         f.hits = b.read(f.hits, rg::Access::SampledRead);
@@ -98,9 +105,10 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
             cmd.setRayTracingState(r.gatherState, r.gatherTable);
             cmd.setBindingSet(0, set);
             cmd.setPushConstants(&maxHits, 4);
-            // Launched for the buffer's capacity; launches past the stored count return at once
-            // (the RHI has no indirect ray dispatch).
-            cmd.dispatchRays(maxHits, 1, 1);
+            // Without indirect dispatch: launched for the buffer's capacity; launches past the stored
+            // count return at once.
+            if (indirect) cmd.dispatchRaysIndirect(ctx.buffer(gatherGrid));
+            else cmd.dispatchRays(maxHits, 1, 1);
         };
     });
 }

@@ -17,6 +17,8 @@ struct CausticResources::Impl {
     const rhi::IBindingLayout* sceneLayoutSeen = nullptr;
     rhi::GraphicsPipelineHandle mapPipeline;
     rhi::ComputePipelineHandle emitterPipeline;   // scene set + emitterLayout
+    rhi::BindingLayoutHandle gridLayout;
+    rhi::ComputePipelineHandle gridFromCount;     // caustic_grid_pass.cpp
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
     rhi::ComputePipelineHandle resolve, temporal, atrous, history;
@@ -53,6 +55,9 @@ struct CausticFrame {
 void addSetupPass(rg::RenderGraph& graph, CausticFrame& f);
 void addMapPass(rg::RenderGraph& graph, CausticFrame& f);
 void addEmitterPass(rg::RenderGraph& graph, CausticFrame& f);
+// The grid (min(stats[statSlot], cap), 1, 1) of an indirect ray dispatch, in a new 12-byte buffer.
+rg::RgBuffer addGridFromCountPass(rg::RenderGraph& graph, CausticFrame& f, const char* name, uint32_t statSlot,
+                                  uint32_t cap);
 void addForwardPass(rg::RenderGraph& graph, CausticFrame& f);
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
 void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out);

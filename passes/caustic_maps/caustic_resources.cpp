@@ -76,6 +76,8 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d) {
     CAUSTICS_TRY(m.temporalLayout, layout(d, {{0, CB}, {1, TX}, {2, TX}, {3, TX}, {4, TX}, {5, TX}, {6, TX}, {7, TX}, {8, TX}, {9, IM}}));
     CAUSTICS_TRY(m.atrousLayout, layout(d, {{0, TX}, {1, TX}, {2, TX}, {3, TX}, {4, IM}}));
     CAUSTICS_TRY(m.historyLayout, layout(d, {{0, TX}, {1, TX}, {2, TX}, {3, TX}, {4, IM}, {5, IM}, {6, IM}, {7, IM}}));
+    CAUSTICS_TRY(m.gridLayout, layout(d, {{0, RO}, {1, RW}}));
+    CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout}, 8));
     CAUSTICS_TRY(m.resolve, compute(d, "caustic_filter/resolve.comp", {m.resolveLayout}, 16));
     CAUSTICS_TRY(m.temporal, compute(d, "caustic_filter/temporal.comp", {m.temporalLayout}, 8));
     CAUSTICS_TRY(m.atrous, compute(d, "caustic_filter/atrous.comp", {m.atrousLayout}, 16));

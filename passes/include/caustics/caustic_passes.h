@@ -35,12 +35,14 @@ inline constexpr uint32_t kStatSplats = 1;             // first-type splats that
 inline constexpr uint32_t kStatGatherHits = 2;         // (hit, sphere) pairs accumulated
 inline constexpr uint32_t kStatSpheres = 3;            // backward hits that became spheres
 inline constexpr uint32_t kStatRaysPerLight = 4;
-// Cost counters of the forward pass (docs/caustics.md, "Cost"): ray segments traced (traceRay calls,
-// not paths), map texels that emit (specular 3x3 neighbourhood) and map texels the dispatch covers.
+// Cost counters (docs/caustics.md, "Cost that follows the caustic work"): forward ray segments traced
+// (traceRay calls, not paths), map texels that emit (specular 3x3 neighbourhood), map texels the
+// forward dispatch covers, and launches of the gather dispatch.
 inline constexpr uint32_t kStatForwardSegments = kStatRaysPerLight + kMaxCausticLights;
 inline constexpr uint32_t kStatEmitterTexels = kStatForwardSegments + 1;
 inline constexpr uint32_t kStatDispatchedTexels = kStatForwardSegments + 2;
-inline constexpr uint32_t kStatCount = kStatForwardSegments + 3;
+inline constexpr uint32_t kStatGatherLaunches = kStatForwardSegments + 3;
+inline constexpr uint32_t kStatCount = kStatForwardSegments + 4;
 
 // One stored forward diffuse hit (std430, 80 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
 // It carries the photon's flux, its incoming direction and the receiver's glTF BRDF parameters, so a

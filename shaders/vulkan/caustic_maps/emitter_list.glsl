@@ -6,6 +6,7 @@
 const uint kStatForwardSegments = 64u;   // kStatRaysPerLight + kMaxCausticLights
 const uint kStatEmitterTexels = 65u;
 const uint kStatDispatchedTexels = 66u;
+const uint kStatGatherLaunches = 67u;
 
 uint packEmitter(uvec2 texel, uint layer) { return texel.x | (texel.y << 13) | (layer << 26); }
 uvec2 emitterTexel(uint packed) { return uvec2(packed & 0x1FFFu, (packed >> 13) & 0x1FFFu); }

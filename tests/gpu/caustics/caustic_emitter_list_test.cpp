@@ -93,5 +93,21 @@ TEST_F(CausticEmitterList, FirstTypeEnergyIsTheSameAtTwoRaysPerTexel) {
     EXPECT_NEAR(two / one, 1.0, 4.0 * sigmaRatio);
 }
 
+// caustics.gather is dispatched from the stored-hit count (caustics.gatherGrid), not for
+// CausticsSettings::maxStoredHits: one launch per stored hit, and at most the buffer's capacity when
+// it overflows.
+TEST_F(CausticEmitterList, GatherLaunchesOncePerStoredHit) {
+    if (!device->capabilities().rayTracingIndirect) GTEST_SKIP() << "no indirect ray dispatch";
+    for (uint32_t maxStoredHits : {1u << 16, 64u}) {
+        CausticsSettings s = smallSettings();
+        s.maxStoredHits = maxStoredHits;
+        auto r = runCaustics(*device, smallGlassSphereScene(), obliqueCamera(), 64, 48, s);
+        ASSERT_TRUE(r) << r.message();
+        const uint32_t offered = r->stats[kStatStoredHitAttempts];
+        ASSERT_GT(offered, 64u);
+        EXPECT_EQ(r->stats[kStatGatherLaunches], std::min(offered, maxStoredHits)) << "maxStoredHits " << maxStoredHits;
+    }
+}
+
 }  // namespace
 }  // namespace caustics::test

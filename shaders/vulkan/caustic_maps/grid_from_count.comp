@@ -1,0 +1,15 @@
+#version 460
+// The grid of an indirect ray dispatch from a GPU counter: (min(counter, cap), 1, 1). caustics.gather
+// is dispatched from the stored-hit count this way, so its cost follows the stored hits instead of
+// CausticsSettings::maxStoredHits (docs/caustics.md, "Cost that follows the caustic work").
+layout(local_size_x = 1) in;
+
+layout(set = 0, binding = 0, std430) readonly buffer Counters { uint counters[]; };
+layout(set = 0, binding = 1, std430) writeonly buffer Grid { uint grid[]; };
+layout(push_constant) uniform Push { uint slot; uint cap; } pc;
+
+void main() {
+    grid[0] = min(counters[pc.slot], pc.cap);
+    grid[1] = 1u;
+    grid[2] = 1u;
+}
