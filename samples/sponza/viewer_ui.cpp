@@ -83,6 +83,13 @@ void settingsSection(ViewerState& s) {
         changed |= ImGui::SliderFloat("radius (pixels)", &c.sphereRadiusScale, 0.25f, 16.0f, "%.2f");
     else
         changed |= ImGui::SliderFloat("radius (m)", &c.sphereWorldRadius, 1e-4f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic);
+    if (c.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint && ImGui::TreeNode("footprint clamps")) {
+        changed |= ImGui::SliderFloat("min magnification", &c.sphereMinMagnification, 1e-3f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic);
+        changed |= ImGui::SliderFloat("max magnification", &c.sphereMaxMagnification, 1.0f, 256.0f, "%.1f", ImGuiSliderFlags_Logarithmic);
+        ImGui::TreePop();
+    }
+    changed |= ImGui::SliderFloat("min radius (m)", &c.sphereMinRadius, 1e-6f, 0.1f, "%.2e", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("max radius (m)", &c.sphereMaxRadius, 1e-3f, 10.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     int hits = int(std::min<uint32_t>(c.maxStoredHits, 1u << 26));
     if (ImGui::SliderInt("max stored hits", &hits, 1024, int(CausticsSettings::kMaxStoredHits), "%d", ImGuiSliderFlags_Logarithmic))
         c.maxStoredHits = uint32_t(hits), changed = true;
