@@ -11,9 +11,8 @@ struct PushConstants {
     float exposure;
     float depthRange;
     uint32_t width, height;
-    uint32_t pad[2];
 };
-static_assert(sizeof(PushConstants) == 32);
+static_assert(sizeof(PushConstants) == 24);   // Params of composite.comp (GLSL and HLSL)
 }  // namespace
 
 Result<CompositePass> CompositePass::create(rhi::IDevice& device) {
@@ -52,7 +51,7 @@ CompositeOutputs CompositePass::addToGraph(rg::RenderGraph& graph, const GBuffer
                                                                     gbuffer.height, "hdr")),
                           rg::Access::StorageWrite);
         PushConstants pc{uint32_t(params.aov), hasCaustics ? 1u : 0u, params.exposure, params.depthRange,
-                         gbuffer.width, gbuffer.height, {0, 0}};
+                         gbuffer.width, gbuffer.height};
         CompositeOutputs o = out;
         rhi::BindingLayoutHandle layout = layout_;
         rhi::ComputePipelineHandle pipeline = pipeline_;

@@ -14,7 +14,7 @@ Result<GBufferPass> GBufferPass::create(rhi::IDevice& device, const rhi::Binding
     CAUSTICS_TRY(desc.fragmentShader.code, pass_shaders::shaderCode(device.backend(), "gbuffer/gbuffer.frag"));
     desc.fragmentShader.stage = rhi::ShaderStage::Fragment;
     desc.bindings.layouts = {sceneLayout, cameraLayout};
-    desc.bindings.pushConstantBytes = 16;
+    desc.bindings.pushConstantBytes = sizeof(uint32_t);   // DrawConstants { uint instanceIndex; } (gbuffer_io.glsl)
     // No culling: glass and thin surfaces are seen from both sides; the shader turns the normal.
     desc.cullMode = rhi::CullMode::None;
     desc.colorFormats = {GBufferFormats::kNormalRoughness, GBufferFormats::kAlbedoMetallic, GBufferFormats::kOptics,
@@ -73,8 +73,8 @@ GBuffer GBufferPass::addToGraph(rg::RenderGraph& graph, const FrameContext& fram
             cmd.setBindingSet(kSceneSet, sceneSet);
             cmd.setBindingSet(kCameraSet, cameraSet);
             for (auto [instance, indexCount] : draws) {
-                uint32_t push[4] = {instance, 0, 0, 0};
-                cmd.setPushConstants(push, sizeof(push));
+                const uint32_t instanceIndex = instance;
+                cmd.setPushConstants(&instanceIndex, sizeof(instanceIndex));
                 cmd.draw(indexCount);
             }
             cmd.endRendering();
