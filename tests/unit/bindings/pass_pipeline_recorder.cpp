@@ -7,6 +7,7 @@
 #include "caustic_maps/caustic_internal.h"
 #include "caustics/caustic_passes.h"
 #include "caustics/caustics_module.h"
+#include "recording_device.h"   // tests/unit/render_graph
 
 namespace caustics::test {
 namespace {
@@ -66,53 +67,6 @@ public:
 private:
     rhi::BindingSetDesc desc_;
     rhi::BindingLayoutHandle layout_;
-};
-
-class FakeTimestampPool final : public rhi::ITimestampPool {
-public:
-    explicit FakeTimestampPool(uint32_t n) : n_(n) {}
-    uint32_t capacity() const override { return n_; }
-
-private:
-    uint32_t n_;
-};
-
-// Creation-time command lists only build the sphere BLAS: nothing to record.
-class NullCommandList final : public rhi::ICommandList {
-public:
-    void begin() override {}
-    void end() override {}
-    void barriers(std::span<const rhi::TextureBarrier>, std::span<const rhi::BufferBarrier>,
-                  std::span<const rhi::AccelStructBarrier>) override {}
-    void writeBuffer(const rhi::BufferHandle&, const void*, uint64_t, uint64_t) override {}
-    void copyBuffer(const rhi::BufferHandle&, uint64_t, const rhi::BufferHandle&, uint64_t, uint64_t) override {}
-    void fillBuffer(const rhi::BufferHandle&, uint32_t, uint64_t, uint64_t) override {}
-    void writeTexture(const rhi::TextureHandle&, uint32_t, uint32_t, const void*, uint64_t) override {}
-    void copyTextureToBuffer(const rhi::BufferHandle&, uint64_t, const rhi::TextureHandle&, uint32_t, uint32_t) override {}
-    void clearTextureFloat(const rhi::TextureHandle&, const float[4]) override {}
-    void clearTextureUint(const rhi::TextureHandle&, const uint32_t[4]) override {}
-    void setComputePipeline(const rhi::ComputePipelineHandle&) override {}
-    void dispatch(uint32_t, uint32_t, uint32_t) override {}
-    void beginRendering(const rhi::RenderingDesc&) override {}
-    void endRendering() override {}
-    void setGraphicsPipeline(const rhi::GraphicsPipelineHandle&) override {}
-    void setViewport(float, float, float, float) override {}
-    void setVertexBuffer(uint32_t, const rhi::BufferHandle&, uint64_t) override {}
-    void setIndexBuffer(const rhi::BufferHandle&, uint64_t) override {}
-    void draw(uint32_t, uint32_t, uint32_t, uint32_t) override {}
-    void drawIndexed(uint32_t, uint32_t, uint32_t, int32_t, uint32_t) override {}
-    void setRayTracingState(const rhi::StateObjectHandle&, const rhi::ShaderTableHandle&) override {}
-    void dispatchRays(uint32_t, uint32_t, uint32_t) override {}
-    void buildBottomLevel(const rhi::AccelStructHandle&, bool) override {}
-    void buildTopLevel(const rhi::AccelStructHandle&, std::span<const rhi::InstanceDesc>, bool) override {}
-    void buildTopLevelFromBuffer(const rhi::AccelStructHandle&, const rhi::BufferHandle&, uint64_t, uint32_t,
-                                 bool) override {}
-    void setBindingSet(uint32_t, const rhi::BindingSetHandle&) override {}
-    void setPushConstants(const void*, uint32_t) override {}
-    void resetTimestamps(const rhi::TimestampPoolHandle&, uint32_t, uint32_t) override {}
-    void writeTimestamp(const rhi::TimestampPoolHandle&, uint32_t) override {}
-    void beginMarker(std::string_view) override {}
-    void endMarker() override {}
 };
 
 // "shaders/d3d12/forward_trace/forward.rgen.hlsl" -> "forward_trace/forward.rgen"
@@ -209,13 +163,14 @@ public:
         return rhi::ShaderTableHandle(std::make_shared<DescOnly<rhi::IShaderTable, rhi::ShaderTableDesc>>(d));
     }
     Result<rhi::TimestampPoolHandle> createTimestampPool(uint32_t count) override {
-        return rhi::TimestampPoolHandle(std::make_shared<FakeTimestampPool>(count));
+        return rhi::TimestampPoolHandle(std::make_shared<rg::test::FakeTimestampPool>(count));
     }
     std::vector<std::optional<double>> readTimestamps(const rhi::TimestampPoolHandle&, uint32_t, uint32_t count) override {
         return std::vector<std::optional<double>>(count);
     }
     Result<rhi::CommandListHandle> createCommandList() override {
-        return rhi::CommandListHandle(std::make_shared<NullCommandList>());
+        // Creation-time command lists only build the sphere BLAS; the render graph tests' list records it.
+        return rhi::CommandListHandle(std::make_shared<rg::test::RecordingCommandList>());
     }
     Result<uint64_t> submit(std::span<const rhi::CommandListHandle>) override { return ++fence_; }
     Status waitForFence(uint64_t) override { return okStatus(); }
