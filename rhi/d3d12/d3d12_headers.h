@@ -5,6 +5,11 @@
 #if defined(CAUSTICS_D3D12_DIRECTX_HEADERS)
 #if !defined(_WIN32)
 #include <wsl/winadapter.h>
+#else
+// MinGW-w64's rpcndr.h calls itself version 475 and refuses the 500 that MIDL-generated d3d12.h
+// requests, although it declares everything d3d12.h uses; included first (through windows.h), it
+// is not asked again. MSVC's SDK headers pass either way.
+#include <windows.h>
 #endif
 #include <directx/d3d12.h>
 #include <directx/dxcore.h>
@@ -42,5 +47,41 @@ private:
 };
 
 inline bool succeeded(HRESULT hr) { return hr >= 0; }
+
+// D3D12 methods that return a struct. MSVC's C++ ABI returns it through a hidden pointer even when it
+// is small; GCC and Clang targeting Windows (MinGW) would not, so DirectX-Headers declares these with an
+// explicit `RetVal` out-parameter there (d3d12.h: `#if defined(_MSC_VER) || !defined(_WIN32)`). Call
+// them through these, never directly, so the backend builds with MSVC, MinGW and the WSL headers.
+#if defined(_MSC_VER) || !defined(_WIN32)
+inline constexpr bool kStructReturnsByValue = true;
+#else
+inline constexpr bool kStructReturnsByValue = false;
+#endif
+// `method` is called as object->method(args...) where the declaration returns the struct, else as
+// object->method(&out, args...).
+template <typename Out, typename Object, typename Method, typename... Args>
+Out structReturn(Object* object, Method method, Args... args) {
+    if constexpr (kStructReturnsByValue) {
+        return (object->*method)(args...);
+    } else {
+        Out out{};
+        (object->*method)(&out, args...);
+        return out;
+    }
+}
+inline D3D12_RESOURCE_ALLOCATION_INFO resourceAllocationInfo(ID3D12Device* device, UINT visibleMask, UINT count,
+                                                             const D3D12_RESOURCE_DESC* descs) {
+    return structReturn<D3D12_RESOURCE_ALLOCATION_INFO>(device, &ID3D12Device::GetResourceAllocationInfo, visibleMask,
+                                                        count, descs);
+}
+inline D3D12_CPU_DESCRIPTOR_HANDLE cpuDescriptorStart(ID3D12DescriptorHeap* heap) {
+    return structReturn<D3D12_CPU_DESCRIPTOR_HANDLE>(heap, &ID3D12DescriptorHeap::GetCPUDescriptorHandleForHeapStart);
+}
+inline D3D12_GPU_DESCRIPTOR_HANDLE gpuDescriptorStart(ID3D12DescriptorHeap* heap) {
+    return structReturn<D3D12_GPU_DESCRIPTOR_HANDLE>(heap, &ID3D12DescriptorHeap::GetGPUDescriptorHandleForHeapStart);
+}
+inline D3D12_RESOURCE_DESC resourceDesc(ID3D12Resource* resource) {
+    return structReturn<D3D12_RESOURCE_DESC>(resource, &ID3D12Resource::GetDesc);
+}
 
 }  // namespace caustics::rhi::d3d12

@@ -13,7 +13,7 @@ Result<std::unique_ptr<CpuDescriptorHeap>> CpuDescriptorHeap::create(ID3D12Devic
     if (!succeeded(device->CreateDescriptorHeap(&d, __uuidof(ID3D12DescriptorHeap), h->heap_.putVoid())))
         return makeError("d3d12: CreateDescriptorHeap (CPU staging) failed");
     h->type_ = type;
-    h->start_ = h->heap_->GetCPUDescriptorHandleForHeapStart();
+    h->start_ = cpuDescriptorStart(h->heap_.get());
     h->increment_ = device->GetDescriptorHandleIncrementSize(type);
     h->capacity_ = capacity;
     return h;
@@ -50,8 +50,8 @@ Result<std::unique_ptr<GpuDescriptorRing>> GpuDescriptorRing::create(ID3D12Devic
     if (!succeeded(device->CreateDescriptorHeap(&d, __uuidof(ID3D12DescriptorHeap), r->heap_.putVoid())))
         return makeError("d3d12: CreateDescriptorHeap (shader-visible) failed");
     r->type_ = type;
-    r->cpuStart_ = r->heap_->GetCPUDescriptorHandleForHeapStart();
-    r->gpuStart_ = r->heap_->GetGPUDescriptorHandleForHeapStart();
+    r->cpuStart_ = cpuDescriptorStart(r->heap_.get());
+    r->gpuStart_ = gpuDescriptorStart(r->heap_.get());
     r->increment_ = device->GetDescriptorHandleIncrementSize(type);
     r->capacity_ = capacity;
     return r;

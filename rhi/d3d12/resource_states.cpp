@@ -12,10 +12,11 @@ D3D12_RESOURCE_STATES toD3D12States(ResourceState state) {
         {ResourceState::VertexBuffer, D3D12_RESOURCE_STATE_VERTEX_AND_CONSTANT_BUFFER},
         {ResourceState::IndexBuffer, D3D12_RESOURCE_STATE_INDEX_BUFFER},
         {ResourceState::IndirectArgument, D3D12_RESOURCE_STATE_INDIRECT_ARGUMENT},
-        // "Any shader stage": pixel and non-pixel together.
+        // "Any shader stage": pixel and non-pixel together. Combined as integers: MinGW's
+        // DEFINE_ENUM_FLAG_OPERATORS are not constexpr (the Windows SDK's are).
         {ResourceState::ShaderResource,
-         D3D12_RESOURCE_STATES(D3D12_RESOURCE_STATE_PIXEL_SHADER_RESOURCE |
-                               D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE)},
+         D3D12_RESOURCE_STATES(int(D3D12_RESOURCE_STATE_PIXEL_SHADER_RESOURCE) |
+                               int(D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE))},
         {ResourceState::UnorderedAccess, D3D12_RESOURCE_STATE_UNORDERED_ACCESS},
         {ResourceState::RenderTarget, D3D12_RESOURCE_STATE_RENDER_TARGET},
         {ResourceState::DepthWrite, D3D12_RESOURCE_STATE_DEPTH_WRITE},
