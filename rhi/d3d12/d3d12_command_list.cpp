@@ -6,6 +6,7 @@ namespace caustics::rhi::d3d12 {
 Result<CommandListHandle> Device::createCommandList() {
     auto cl = std::make_shared<CommandList>();
     cl->device = this;
+    cl->releases = releases_;
     if (!succeeded(device_->CreateCommandAllocator(D3D12_COMMAND_LIST_TYPE_DIRECT, __uuidof(ID3D12CommandAllocator),
                                                    cl->allocator.putVoid())) ||
         !succeeded(device_->CreateCommandList(0, D3D12_COMMAND_LIST_TYPE_DIRECT, cl->allocator.get(), nullptr,
@@ -40,6 +41,8 @@ Result<uint64_t> Device::submit(std::span<const CommandListHandle> lists) {
     if (!raw.empty()) queue_->ExecuteCommandLists(UINT(raw.size()), raw.data());
     const uint64_t value = nextFenceValue_++;
     if (!succeeded(queue_->Signal(fence_.get(), value))) return makeError("d3d12: queue Signal failed");
+    releases_->submitted(value);
+    releases_->collect();
     return value;
 }
 

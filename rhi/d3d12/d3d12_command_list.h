@@ -22,7 +22,17 @@ constexpr uint32_t kRecordingRtvs = 256, kRecordingDsvs = 64, kRecordingCpuUavs 
 
 class CommandList final : public ICommandList {
 public:
+    // A list destroyed while its last submission runs keeps the allocator's memory, the
+    // shader-visible descriptor rings and its upload buffers until the GPU is done.
+    ~CommandList() override {
+        if (!releases) return;
+        retireToQueue(releases, list, allocator);
+        releases->retire(std::shared_ptr<GpuDescriptorRing>(std::move(resourceRing)));
+        releases->retire(std::shared_ptr<GpuDescriptorRing>(std::move(samplerRing)));
+        for (auto& upload : keepAlive) releases->retire(std::move(upload));
+    }
     Device* device = nullptr;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     ComPtr<ID3D12CommandAllocator> allocator;
     ComPtr<ID3D12GraphicsCommandList4> list;
     std::unique_ptr<GpuDescriptorRing> resourceRing, samplerRing;

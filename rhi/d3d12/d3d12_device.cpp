@@ -51,6 +51,7 @@ Result<DeviceHandle> Device::create(const DeviceDesc& desc, RuntimeLibraries lib
 
 Device::~Device() {
     if (queue_) (void)waitIdle();
+    if (releases_) releases_->shutdown();   // idle: objects outliving the device release at once
 }
 
 Status Device::init(const DeviceDesc& desc) {
@@ -135,6 +136,7 @@ Status Device::finishInit() {
     if (succeeded(queue_->GetTimestampFrequency(&frequency)) && frequency) caps_.timestampPeriodNs = 1e9 / double(frequency);
     if (!succeeded(device_->CreateFence(0, D3D12_FENCE_FLAG_NONE, __uuidof(ID3D12Fence), fence_.putVoid())))
         return makeError("d3d12: CreateFence failed");
+    releases_ = std::make_shared<DeferredReleaseQueue>([fence = fence_.get()] { return fence->GetCompletedValue(); });
     CAUSTICS_TRY(cpuResources_, CpuDescriptorHeap::create(device_.get(), D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV, 65536));
     CAUSTICS_TRY(cpuSamplers_, CpuDescriptorHeap::create(device_.get(), D3D12_DESCRIPTOR_HEAP_TYPE_SAMPLER, 2048));
     CAUSTICS_TRY(compiler_, ShaderCompiler::create(libs_.dxcompiler));
@@ -174,6 +176,7 @@ Status Device::waitForFence(uint64_t value) {
             return makeError("d3d12: device removed while waiting for fence " + std::to_string(value));
         std::this_thread::sleep_for(std::chrono::microseconds(50));
     }
+    releases_->collect();
     return okStatus();
 }
 
@@ -183,6 +186,7 @@ Status Device::waitIdle() {
         std::lock_guard lock(submitMutex_);
         value = nextFenceValue_++;
         queue_->Signal(fence_.get(), value);
+        releases_->submitted(value);
     }
     return waitForFence(value);
 }
@@ -212,6 +216,7 @@ Status Device::runImmediate(const std::function<void(ID3D12GraphicsCommandList4*
 
 Result<TimestampPoolHandle> Device::createTimestampPool(uint32_t count) {
     auto pool = std::make_shared<TimestampPool>();
+    pool->releases = releases_;
     D3D12_QUERY_HEAP_DESC q{D3D12_QUERY_HEAP_TYPE_TIMESTAMP, count, 0};
     if (!succeeded(device_->CreateQueryHeap(&q, __uuidof(ID3D12QueryHeap), pool->heap.putVoid())))
         return makeError("d3d12: CreateQueryHeap failed");

@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "d3d12_headers.h"
+#include "deferred_release_queue.h"
 #include "descriptor_heaps.h"
 #include "caustics/rhi/device.h"
 #include "runtime_library.h"
@@ -71,6 +72,8 @@ public:
     CpuDescriptorHeap& cpuResourceDescriptors() { return *cpuResources_; }
     CpuDescriptorHeap& cpuSamplerDescriptors() { return *cpuSamplers_; }
     ShaderCompiler& shaderCompiler() { return *compiler_; }
+    // Every object this device creates retires its D3D12 objects here (deferred_release_queue.h).
+    const std::shared_ptr<DeferredReleaseQueue>& releaseQueue() const { return releases_; }
     Result<ComPtr<ID3D12RootSignature>> createRootSignature(const struct RootSignatureLayout& layout,
                                                             const std::string& name);
     // Bytecode for DXIL as is, HLSL compiled with dxcompiler, SPIR-V refused.
@@ -94,6 +97,7 @@ private:
     std::mutex submitMutex_;
     std::unique_ptr<CpuDescriptorHeap> cpuResources_, cpuSamplers_;
     std::unique_ptr<ShaderCompiler> compiler_;
+    std::shared_ptr<DeferredReleaseQueue> releases_;
     PFN_D3D12_SERIALIZE_VERSIONED_ROOT_SIGNATURE serializeRootSignature_ = nullptr;
 };
 

@@ -7,6 +7,7 @@ namespace caustics::rhi::d3d12 {
 
 Result<GraphicsPipelineHandle> Device::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
     auto p = std::make_shared<GraphicsPipeline>();
+    p->releases = releases_;
     p->desc_ = desc;
     CAUSTICS_TRY(std::unique_ptr<GraphicsPsoDescStorage> storage, GraphicsPsoDescStorage::create(desc));
     CAUSTICS_TRY(p->root, makeRootBinding(*this, desc.bindings, RootSignatureKind::Graphics, desc.debugName));

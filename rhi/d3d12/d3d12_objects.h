@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "d3d12_headers.h"
+#include "deferred_release_queue.h"
 #include "descriptor_heaps.h"
 #include "graphics_pipeline_desc.h"
 #include "root_signature_layout.h"
@@ -15,9 +16,19 @@
 
 namespace caustics::rhi::d3d12 {
 
+// Hands an object's D3D12 objects to its device's deferred releases (deferred_release_queue.h), so
+// none is freed while the GPU may still use it; without a queue they are released at once.
+template <typename... T>
+void retireToQueue(const std::shared_ptr<DeferredReleaseQueue>& queue, ComPtr<T>&... objects) {
+    if (!queue) return;
+    (queue->retire(objects ? std::make_shared<ComPtr<T>>(std::move(objects)) : nullptr), ...);
+}
+
 class Buffer final : public IBuffer {
 public:
+    ~Buffer() override { retireToQueue(releases, resource); }
     BufferDesc desc_;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     ComPtr<ID3D12Resource> resource;
     void* mapped = nullptr;
     D3D12_RESOURCE_STATES state = D3D12_RESOURCE_STATE_COMMON;   // last state a barrier left it in
@@ -31,7 +42,9 @@ public:
 
 class Texture final : public ITexture {
 public:
+    ~Texture() override { retireToQueue(releases, resource); }
     TextureDesc desc_;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     ComPtr<ID3D12Resource> resource;
     D3D12_RESOURCE_STATES state = D3D12_RESOURCE_STATE_COMMON;
     const TextureDesc& desc() const override { return desc_; }
@@ -48,7 +61,9 @@ public:
 
 class Heap final : public IHeap {
 public:
+    ~Heap() override { retireToQueue(releases, heap); }
     HeapDesc desc_;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     ComPtr<ID3D12Heap> heap;
     const HeapDesc& desc() const override { return desc_; }
 };
@@ -80,7 +95,9 @@ struct RootBinding {
 
 class ComputePipeline final : public IComputePipeline {
 public:
+    ~ComputePipeline() override { retireToQueue(releases, pso, root.rootSignature); }
     ComputePipelineDesc desc_;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     RootBinding root;
     ComPtr<ID3D12PipelineState> pso;
     const ComputePipelineDesc& desc() const override { return desc_; }
@@ -88,7 +105,9 @@ public:
 
 class GraphicsPipeline final : public IGraphicsPipeline {
 public:
+    ~GraphicsPipeline() override { retireToQueue(releases, pso, root.rootSignature); }
     GraphicsPipelineDesc desc_;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     RootBinding root;
     ComPtr<ID3D12PipelineState> pso;
     D3D_PRIMITIVE_TOPOLOGY topology = D3D_PRIMITIVE_TOPOLOGY_TRIANGLELIST;
@@ -98,7 +117,9 @@ public:
 
 class AccelStruct final : public IAccelStruct {
 public:
+    ~AccelStruct() override { retireToQueue(releases, storage, scratch, instances); }
     AccelStructDesc desc_;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     ComPtr<ID3D12Resource> storage;    // in RAYTRACING_ACCELERATION_STRUCTURE for its whole life
     ComPtr<ID3D12Resource> scratch;    // sized for max(build, update)
     ComPtr<ID3D12Resource> instances;  // top level: upload buffer for host instances
@@ -115,7 +136,9 @@ public:
 
 class StateObject final : public IStateObject {
 public:
+    ~StateObject() override { retireToQueue(releases, stateObject, localRootSignature, root.rootSignature); }
     StateObjectDesc desc_;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     RootBinding root;
     ComPtr<ID3D12RootSignature> localRootSignature;
     ComPtr<ID3D12StateObject> stateObject;
@@ -129,7 +152,9 @@ public:
 
 class ShaderTable final : public IShaderTable {
 public:
+    ~ShaderTable() override { retireToQueue(releases, buffer); }
     ShaderTableDesc desc_;
+    std::shared_ptr<DeferredReleaseQueue> releases;
     ShaderTableLayout layout;
     ComPtr<ID3D12Resource> buffer;   // upload heap, GENERIC_READ
     const ShaderTableDesc& desc() const override { return desc_; }
@@ -137,6 +162,8 @@ public:
 
 class TimestampPool final : public ITimestampPool {
 public:
+    ~TimestampPool() override { retireToQueue(releases, heap, readback); }
+    std::shared_ptr<DeferredReleaseQueue> releases;
     ComPtr<ID3D12QueryHeap> heap;
     ComPtr<ID3D12Resource> readback;   // resolved ticks
     void* mapped = nullptr;

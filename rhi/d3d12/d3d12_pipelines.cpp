@@ -20,6 +20,7 @@ Result<RootBinding> makeRootBinding(Device& device, const PipelineBindings& bind
 
 Result<ComputePipelineHandle> Device::createComputePipeline(const ComputePipelineDesc& desc) {
     auto p = std::make_shared<ComputePipeline>();
+    p->releases = releases_;
     p->desc_ = desc;
     CAUSTICS_TRY(p->root, makeRootBinding(*this, desc.bindings, RootSignatureKind::Compute, desc.debugName));
     CAUSTICS_TRY(std::vector<uint8_t> code,

@@ -15,6 +15,7 @@ Result<RootBinding> makeRootBinding(Device& device, const PipelineBindings& bind
 Result<StateObjectHandle> Device::createStateObject(const StateObjectDesc& desc) {
     if (!caps_.rayTracingPipeline) return makeError("d3d12: '" + desc.debugName + "' needs DXR, which this device lacks");
     auto so = std::make_shared<StateObject>();
+    so->releases = releases_;
     so->desc_ = desc;
     CAUSTICS_TRY(so->root, makeRootBinding(*this, desc.globalBindings, RootSignatureKind::Compute, desc.debugName));
     if (desc.localBindings.localDataBytes > 0) {
@@ -54,6 +55,7 @@ Result<ShaderTableHandle> Device::createShaderTable(const ShaderTableDesc& desc)
                  buildShaderTableImage(desc, so->desc_.localBindings.localDataBytes,
                                        [so](const std::string& n) { return so->shaderIdentifier(n); }));
     auto table = std::make_shared<ShaderTable>();
+    table->releases = releases_;
     table->desc_ = desc;
     table->layout = image.layout;
     // Upload heap: placed resources start at 64 KiB boundaries, so the 64-byte table alignment holds.
@@ -89,6 +91,7 @@ Status allocateAccelStruct(ID3D12Device5* device, AccelStruct& as,
 
 Result<AccelStructHandle> Device::createAccelStruct(const AccelStructDesc& desc) {
     auto as = std::make_shared<AccelStruct>();
+    as->releases = releases_;
     as->desc_ = desc;
     if (desc.isTopLevel) {
         CAUSTICS_CHECK(allocateAccelStruct(device_.get(), *as, makeTopLevelInputs(desc, 0, desc.maxInstances, false)));
@@ -133,6 +136,7 @@ Result<AccelStructHandle> Device::compactAccelStruct(const AccelStructHandle& bu
     readback->Unmap(0, nullptr);
 
     auto out = std::make_shared<AccelStruct>();
+    out->releases = releases_;
     out->desc_ = built->desc_;
     out->storageSize = alignUp(compactedSize, D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT);
     CAUSTICS_TRY(out->storage, createCommittedBuffer(device_.get(), out->storageSize, D3D12_HEAP_TYPE_DEFAULT,

@@ -105,6 +105,7 @@ Result<ComPtr<ID3D12Resource>> createCommittedBuffer(ID3D12Device* device, uint6
 
 Result<BufferHandle> Device::createBuffer(const BufferDesc& desc) {
     auto b = std::make_shared<Buffer>();
+    b->releases = releases_;
     b->desc_ = desc;
     const bool as = hasAny(desc.usage, BufferUsage::AccelStructStorage);
     b->state = initialStateOf(desc.memory, as);
@@ -124,6 +125,7 @@ Result<TextureHandle> Device::createTexture(const TextureDesc& desc) {
     if (toDxgiFormat(desc.format) == DXGI_FORMAT_UNKNOWN)
         return makeError("d3d12: texture '" + desc.debugName + "' has no D3D12 format");
     auto t = std::make_shared<Texture>();
+    t->releases = releases_;
     t->desc_ = desc;
     if (desc.isVirtual) return TextureHandle(t);
     D3D12_HEAP_PROPERTIES props{};
@@ -146,6 +148,7 @@ Result<SamplerHandle> Device::createSampler(const SamplerDesc& desc) {
 
 Result<HeapHandle> Device::createHeap(const HeapDesc& desc) {
     auto h = std::make_shared<Heap>();
+    h->releases = releases_;
     h->desc_ = desc;
     D3D12_HEAP_DESC d{};
     d.SizeInBytes = desc.byteSize;
@@ -162,13 +165,13 @@ Result<HeapHandle> Device::createHeap(const HeapDesc& desc) {
 
 MemoryRequirements Device::memoryRequirements(const TextureDesc& desc) {
     D3D12_RESOURCE_DESC d = textureDescFor(desc);
-    D3D12_RESOURCE_ALLOCATION_INFO info = device_->GetResourceAllocationInfo(0, 1, &d);
+    D3D12_RESOURCE_ALLOCATION_INFO info = resourceAllocationInfo(device_.get(), 0, 1, &d);
     return {info.SizeInBytes, info.Alignment};
 }
 
 MemoryRequirements Device::memoryRequirements(const BufferDesc& desc) {
     D3D12_RESOURCE_DESC d = bufferDescFor(desc);
-    D3D12_RESOURCE_ALLOCATION_INFO info = device_->GetResourceAllocationInfo(0, 1, &d);
+    D3D12_RESOURCE_ALLOCATION_INFO info = resourceAllocationInfo(device_.get(), 0, 1, &d);
     return {info.SizeInBytes, info.Alignment};
 }
 
