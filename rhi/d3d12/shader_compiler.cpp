@@ -3,47 +3,12 @@
 #include <memory>
 
 #include "d3d12_headers.h"
+#include "dxc_interface.h"
 
 namespace caustics::rhi::d3d12 {
 namespace {
 
-// dxcapi.h ABI. On non-Windows builds DXC's own IUnknown (its WinAdapter.h) declares a virtual
-// destructor after Release, which the Itanium C++ ABI lays out as two vtable slots; the WSL IUnknown
-// of DirectX-Headers has none. So DXC interfaces get their own base with those two slots.
-struct DxcUnknown {
-    virtual HRESULT STDMETHODCALLTYPE QueryInterface(REFIID riid, void** object) = 0;
-    virtual ULONG STDMETHODCALLTYPE AddRef() = 0;
-    virtual ULONG STDMETHODCALLTYPE Release() = 0;
-#if !defined(_WIN32)
-    virtual void reservedCompleteDestructor() = 0;
-    virtual void reservedDeletingDestructor() = 0;
-#endif
-};
-struct DxcBuffer {
-    const void* ptr;
-    size_t size;
-    UINT encoding;
-};
-constexpr UINT kDxcCpUtf8 = 65001;
-struct IDxcBlob : DxcUnknown {
-    virtual void* STDMETHODCALLTYPE GetBufferPointer() = 0;
-    virtual size_t STDMETHODCALLTYPE GetBufferSize() = 0;
-};
-struct IDxcOperationResult : DxcUnknown {
-    virtual HRESULT STDMETHODCALLTYPE GetStatus(HRESULT* status) = 0;
-    virtual HRESULT STDMETHODCALLTYPE GetResult(IDxcBlob** result) = 0;
-    virtual HRESULT STDMETHODCALLTYPE GetErrorBuffer(IDxcBlob** errors) = 0;   // an IDxcBlobEncoding
-};
-struct IDxcCompiler3 : DxcUnknown {
-    virtual HRESULT STDMETHODCALLTYPE Compile(const DxcBuffer* source, const wchar_t** arguments, UINT32 argCount,
-                                              void* includeHandler, REFIID riid, void** result) = 0;
-};
-using DxcCreateInstanceProc = HRESULT(STDMETHODCALLTYPE*)(REFCLSID, REFIID, void**);
-
-// GUIDs from dxcapi.h.
-constexpr GUID kClsidDxcCompiler = {0x73e22d93, 0xe6ce, 0x47f3, {0xb5, 0xbf, 0xf0, 0x66, 0x4f, 0x39, 0xc1, 0xb0}};
-constexpr GUID kIidCompiler3 = {0x228b4687, 0x5a6a, 0x4730, {0x90, 0x0c, 0x97, 0x02, 0xb2, 0x20, 0x3f, 0x54}};
-constexpr GUID kIidResult = {0x58346cda, 0xdde7, 0x4497, {0x94, 0x61, 0x6f, 0x87, 0xaf, 0x5e, 0x06, 0x59}};
+using namespace dxc;
 
 template <typename T>
 struct DxcPtr {

@@ -1,6 +1,7 @@
 #pragma once
 // HLSL -> DXIL through dxcompiler, loaded at run time. The few DXC interfaces used are declared in
-// shader_compiler.cpp from the public dxcapi.h ABI (IDxcCompiler3::Compile, IDxcResult).
+// dxc_interface.h from the public dxcapi.h ABI (IDxcCompiler3::Compile, IDxcResult); the compile
+// flags come from shader_compile_options.h only.
 #include <cstdint>
 #include <memory>
 #include <string>
