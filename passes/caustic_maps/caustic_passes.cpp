@@ -112,6 +112,10 @@ std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, c
         warnings.push_back("caustic hit buffer overflowed: " + std::to_string(offered) + " diffuse hits offered, " +
                            std::to_string(settings.maxStoredHits) + " kept (CausticsSettings::maxStoredHits); " +
                            "second-type caustics miss the rest");
+    if (stats.size() > kStatAccumulationGiveUps && stats[kStatAccumulationGiveUps] > 0)
+        warnings.push_back(std::to_string(stats[kStatAccumulationGiveUps]) +
+                           " caustic radiance contributions were dropped: the float compare-and-swap loop gave up "
+                           "under contention (D3D12 float path, docs/d3d12.md); the fixed-point path never drops");
     return warnings;
 }
 

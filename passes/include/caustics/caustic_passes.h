@@ -42,7 +42,10 @@ inline constexpr uint32_t kStatForwardSegments = kStatRaysPerLight + kMaxCaustic
 inline constexpr uint32_t kStatEmitterTexels = kStatForwardSegments + 1;
 inline constexpr uint32_t kStatDispatchedTexels = kStatForwardSegments + 2;
 inline constexpr uint32_t kStatGatherLaunches = kStatForwardSegments + 3;
-inline constexpr uint32_t kStatCount = kStatForwardSegments + 4;
+// Radiance contributions the HLSL float compare-and-swap loop gave up on after its bounded attempts
+// (shaders/d3d12/forward_trace/radiance_atomics.hlsli; docs/d3d12.md). Always 0 on Vulkan.
+inline constexpr uint32_t kStatAccumulationGiveUps = kStatForwardSegments + 4;
+inline constexpr uint32_t kStatCount = kStatAccumulationGiveUps + 1;
 
 // One stored forward diffuse hit (std430, 80 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
 // It carries the photon's flux, its incoming direction and the receiver's glTF BRDF parameters, so a

@@ -28,6 +28,7 @@ static const uint kStatSplats = 1u;
 static const uint kStatGatherHits = 2u;
 static const uint kStatSpheres = 3u;
 static const uint kStatRaysPerLight = 4u;
+static const uint kStatAccumulationGiveUps = 68u;   // kStatForwardSegments + 4 (caustic_passes.h)
 
 struct TracePayload {   // t < 0 = miss
     float2 barycentrics;

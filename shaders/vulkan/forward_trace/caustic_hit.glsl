@@ -48,6 +48,7 @@ const uint kStatSplats = 1u;
 const uint kStatGatherHits = 2u;
 const uint kStatSpheres = 3u;
 const uint kStatRaysPerLight = 4u;
+const uint kStatAccumulationGiveUps = 68u;   // kStatForwardSegments + 4 (caustic_passes.h); only HLSL's CAS loop counts
 
 // Closest-hit payload of trace.rchit / trace.rmiss: t < 0 = miss.
 struct TracePayload {
