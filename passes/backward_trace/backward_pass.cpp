@@ -44,7 +44,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
                s.sphereMinRadius,
                s.sphereMaxRadius,
                0};
-        static_assert(sizeof(Push) == 48);
+        static_assert(sizeof(Push) == kBackwardPushBytes);
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {

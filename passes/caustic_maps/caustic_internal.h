@@ -8,6 +8,11 @@
 
 namespace caustics {
 
+// Push-constant bytes of the scene-trace passes (the Push structs of forward_trace_pass.cpp and
+// backward_pass.cpp); their state objects are created with exactly these, which binding_truth_tests
+// compare with the shaders' push blocks.
+inline constexpr uint32_t kForwardPushBytes = 32, kBackwardPushBytes = 48;
+
 struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
     bool floatAtomics = true;

@@ -33,7 +33,7 @@ Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path,
 }
 
 // Ray-generation + trace.rmiss/trace.rchit over the scene TLAS (forward and backward passes).
-Status sceneTraceState(rhi::IDevice& d, const char* rayGen, const rhi::BindingLayoutHandle& scene,
+Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, const rhi::BindingLayoutHandle& scene,
                        const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table) {
     rhi::StateObjectDesc desc;
     CAUSTICS_TRY(auto rg, pass_shaders::shaderLibrary(d.backend(), rayGen, "rayGen", ShaderStage::RayGen));
@@ -45,7 +45,7 @@ Status sceneTraceState(rhi::IDevice& d, const char* rayGen, const rhi::BindingLa
     desc.maxAttributeBytes = 8;
     desc.maxRecursionDepth = 1;  // the specular chain is iterated in the raygen shader
     desc.globalBindings.layouts = {scene, pass};
-    desc.globalBindings.pushConstantBytes = 48;  // the larger push block: backward.rgen (forward: 32)
+    desc.globalBindings.pushConstantBytes = pushBytes;
     desc.debugName = rayGen;
     CAUSTICS_TRY(so, d.createStateObject(desc));
     CAUSTICS_TRY(table, d.createShaderTable(rhi::ShaderTableDesc{so}.setRayGen("rayGen").addMiss("miss").addHitGroup("hit")));
@@ -137,8 +137,9 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
     CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout}, 4));
     CAUSTICS_CHECK(sceneTraceState(d, floatAtomics ? "forward_trace/forward.rgen" : "forward_trace/forward_fixed.rgen",
+                                   kForwardPushBytes,
                                    sceneLayout, forwardLayout, forwardState, forwardTable));
-    CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", sceneLayout, backwardLayout, backwardState, backwardTable));
+    CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", kBackwardPushBytes, sceneLayout, backwardLayout, backwardState, backwardTable));
     sceneLayoutSeen = sceneLayout.get();
     return okStatus();
 }

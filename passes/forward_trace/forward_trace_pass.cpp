@@ -32,7 +32,7 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
             uint32_t maxDepth, frame, flags, maxStoredHits, pad;
         } push{s.mapResolution, uint32_t(std::ceil(s.raysPerTexel)), s.raysPerTexel, s.maxSpecularDepth,
                f.in->frameIndex * 0x9E3779B9u + s.seed, s.russianRoulette ? 1u : 0u, s.maxStoredHits, 0};
-        static_assert(sizeof(Push) == 32);
+        static_assert(sizeof(Push) == kForwardPushBytes);
         const uint32_t layers = uint32_t(f.plan.maps.size());
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
