@@ -26,7 +26,7 @@ public:
     // shader-visible descriptor rings and its upload buffers until the GPU is done.
     ~CommandList() override {
         if (!releases) return;
-        retireToQueue(releases, list, allocator);
+        retireToQueue(releases, list, allocator, dispatchRaysSignature);
         releases->retire(std::shared_ptr<GpuDescriptorRing>(std::move(resourceRing)));
         releases->retire(std::shared_ptr<GpuDescriptorRing>(std::move(samplerRing)));
         for (auto& upload : keepAlive) releases->retire(std::move(upload));

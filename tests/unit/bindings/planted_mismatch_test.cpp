@@ -92,8 +92,9 @@ TEST_F(PlantedMismatch, HlslRegisterClassOfTheWrongTypeIsReported) {
 
 TEST_F(PlantedMismatch, GlslBindingNumberChangedIsReported) {
     auto errors = checkWithEdit(ShaderLanguage::Glsl, "forward_trace/forward_body.glsl", "binding = 6, std430\\) buffer Hits", "binding = 2, std430) buffer Hits");
-    // Slot 2 exists in the C++ layout but holds a sampled texture.
-    EXPECT_TRUE(anyContains(errors, "declares slot 2 as SampledTexture")) << ::testing::PrintToString(errors);
+    // Slot 2 exists in the C++ layout but holds another kind of binding than the writable hit buffer.
+    EXPECT_TRUE(anyContains(errors, "'Hits' (set 1, slot 2, StorageBufferRW): the C++ layout 1 declares slot 2 as"))
+        << ::testing::PrintToString(errors);
 }
 
 TEST_F(PlantedMismatch, CppBindingTypeChangedIsReportedOnBothSides) {
