@@ -13,6 +13,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
     graph.addPass("caustics.backward", [&](rg::PassBuilder& b) {
         const CausticsSettings& s = f.in->settings;
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
+        if (f.in->sceneTlas.valid()) b.read(f.in->sceneTlas);
         rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
         rg::RgTexture optics = b.read(f.in->gbuffer.optics, rg::Access::SampledRead);
         f.spheres = b.write(b.createBuffer("caustics.spheres", rhi::BufferDesc().setByteSize(uint64_t(pixels) * sizeof(CausticSphere))

@@ -45,16 +45,16 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     });
     if (!f.in->settings.filter) return;
 
-    CausticResources::Impl& res = *f.res;
+    // The view's history (caustic_passes.h): valid only after an executed frame of this view.
+    CausticViewHistory& hist = *f.history;
     const GBuffer& g = f.in->gbuffer;
-    const rhi::ResourceState histState = res.historyValid ? rhi::ResourceState::ShaderResource : rhi::ResourceState::Undefined;
+    const rhi::ResourceState histState = hist.valid ? rhi::ResourceState::ShaderResource : rhi::ResourceState::Undefined;
     const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
-    rg::RgTexture hColor = graph.importTexture("caustics.historyColor", res.historyColor, histState, ro);
-    rg::RgTexture hDepth = graph.importTexture("caustics.historyDepth", res.historyDepth, histState, ro);
-    rg::RgTexture hNormal = graph.importTexture("caustics.historyNormal", res.historyNormal, histState, ro);
-    rg::RgTexture hId = graph.importTexture("caustics.historyObjectId", res.historyObjectId, histState, ro);
-    const bool historyUsable = res.historyValid && !f.in->resetHistory;
-    res.historyValid = true;   // after this frame runs
+    rg::RgTexture hColor = graph.importTexture("caustics.historyColor", hist.color, histState, ro);
+    rg::RgTexture hDepth = graph.importTexture("caustics.historyDepth", hist.depth, histState, ro);
+    rg::RgTexture hNormal = graph.importTexture("caustics.historyNormal", hist.normal, histState, ro);
+    rg::RgTexture hId = graph.importTexture("caustics.historyObjectId", hist.objectId, histState, ro);
+    const bool historyUsable = hist.valid && !f.in->resetHistory;
 
     rg::RgTexture temporal;
     graph.addPass("caustics.temporal", [&](rg::PassBuilder& b) {
@@ -100,6 +100,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
             ctx.cmd().setBindingSet(0, set);
             ctx.cmd().setPushConstants(push, sizeof(push));
             ctx.cmd().dispatch(groups(w), groups(hgt));
+            h.history->valid = true;   // committed when recorded, not when the graph was built
         };
     });
     // The history pass has no reader this frame: mark its products as outputs so it is not culled.

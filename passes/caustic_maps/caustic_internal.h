@@ -31,15 +31,14 @@ struct CausticResources::Impl {
     rhi::AccelStructHandle sphereBlas;
     rhi::AccelStructHandle sphereTlas;
     uint32_t tlasCapacity = 0;
-    rhi::TextureHandle historyColor, historyDepth, historyNormal, historyObjectId;
-    uint32_t historyWidth = 0, historyHeight = 0;
-    bool historyValid = false;
-    // Binding sets made while recording must outlive the GPU's use: kept for three frames.
-    std::array<std::vector<rhi::BindingSetHandle>, 3> frameSets;
+    CausticViewHistory ownHistory;   // used when CausticFrameInputs::history is null
+    // Binding sets made while recording must outlive the GPU's use: kept for framesInFlight frames.
+    std::vector<std::vector<rhi::BindingSetHandle>> frameSets;
     uint32_t frameSlot = 0;
 
     Status ensureScenePipelines(const rhi::BindingLayoutHandle& sceneLayout);
     Status ensureSizeResources(uint32_t width, uint32_t height);
+    Status ensureHistory(CausticViewHistory& history, uint32_t width, uint32_t height);
     // Binding set for this frame (kept alive); null after logging the error.
     rhi::BindingSetHandle makeSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
                                   rhi::BindingSetDesc desc);
@@ -49,6 +48,7 @@ struct CausticResources::Impl {
 struct CausticFrame {
     const CausticFrameInputs* in = nullptr;
     CausticResources::Impl* res = nullptr;
+    CausticViewHistory* history = nullptr;   // the view's (or res->ownHistory)
     uint32_t width = 0, height = 0;
     rg::RgBuffer camera, maps, radiance1, radiance2, hits, stats, spheres, instances;
     rg::RgBuffer emitters, forwardArgs;   // caustics.emitters -> caustics.forward

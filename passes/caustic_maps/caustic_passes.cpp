@@ -68,18 +68,26 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     CausticResources::Impl* res = persistent.impl();
     if (!res) return makeError("addCausticPasses: CausticResources were not created");
     if (!in.scene || !in.gpuScene || !in.sceneBindings) return makeError("addCausticPasses: scene inputs missing");
-    if (!in.gbuffer.valid()) return makeError("addCausticPasses: G-buffer handles are invalid");
+    // The channels the caustic passes read (caustics/gbuffer.h, hostGBufferRequirements).
+    const GBuffer& g = in.gbuffer;
+    if (!g.linearDepth.valid() || !g.objectId.valid() || g.width == 0 || g.height == 0 ||
+        (in.settings.secondType && !g.optics.valid()) || (in.settings.filter && !g.normalRoughness.valid()))
+        return makeError("addCausticPasses: the G-buffer lacks linearDepth, objectId, optics (secondType) or "
+                         "normalRoughness (filter)");
     CAUSTICS_CHECK(in.settings.validate());
     CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene));
     CAUSTICS_CHECK(checkDeviceLimits(in, plan));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
     CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height));
+    CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
+    if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
     res->frameSlot = in.frameIndex % uint32_t(res->frameSets.size());
     res->frameSets[res->frameSlot].clear();
 
     CausticFrame f;
     f.in = &in;
     f.res = res;
+    f.history = history;
     f.width = in.gbuffer.width;
     f.height = in.gbuffer.height;
     f.plan = std::move(plan);

@@ -59,11 +59,13 @@ CausticResources::~CausticResources() = default;
 CausticResources::CausticResources(CausticResources&&) noexcept = default;
 CausticResources& CausticResources::operator=(CausticResources&&) noexcept = default;
 
-Result<CausticResources> CausticResources::create(rhi::IDevice& d) {
+Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t framesInFlight) {
+    if (framesInFlight < 1) return makeError("CausticResources::create: framesInFlight must be >= 1");
     CausticResources r;
     r.impl_ = std::make_unique<Impl>();
     Impl& m = *r.impl_;
     m.device = &d;
+    m.frameSets.resize(framesInFlight);
     m.floatAtomics = d.capabilities().shaderFloatAtomicAdd;
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
                TX = BindingType::SampledTexture, IM = BindingType::StorageTexture, AS = BindingType::AccelStruct;
@@ -156,20 +158,23 @@ Status CausticResources::Impl::ensureSizeResources(uint32_t width, uint32_t heig
         CAUSTICS_TRY(sphereTlas, d.createAccelStruct(tlas));
         tlasCapacity = pixels;
     }
-    if (historyWidth != width || historyHeight != height) {
-        auto make = [&](rhi::Format f, const char* name) {
-            return d.createTexture(rhi::TextureDesc().setSize(width, height).setFormat(f)
-                                       .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage)
-                                       .setDebugName(name));
-        };
-        CAUSTICS_TRY(historyColor, make(rhi::Format::RGBA32_FLOAT, "caustics.historyColor"));
-        CAUSTICS_TRY(historyDepth, make(rhi::Format::R32_FLOAT, "caustics.historyDepth"));
-        CAUSTICS_TRY(historyNormal, make(rhi::Format::RGBA16_FLOAT, "caustics.historyNormal"));
-        CAUSTICS_TRY(historyObjectId, make(rhi::Format::R32_UINT, "caustics.historyObjectId"));
-        historyWidth = width;
-        historyHeight = height;
-        historyValid = false;
-    }
+    return okStatus();
+}
+
+Status CausticResources::Impl::ensureHistory(CausticViewHistory& h, uint32_t width, uint32_t height) {
+    if (h.color && h.width == width && h.height == height) return okStatus();
+    auto make = [&](rhi::Format f, const char* name) {
+        return device->createTexture(rhi::TextureDesc().setSize(width, height).setFormat(f)
+                                         .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage)
+                                         .setDebugName(name));
+    };
+    CAUSTICS_TRY(h.color, make(rhi::Format::RGBA32_FLOAT, "caustics.historyColor"));
+    CAUSTICS_TRY(h.depth, make(rhi::Format::R32_FLOAT, "caustics.historyDepth"));
+    CAUSTICS_TRY(h.normal, make(rhi::Format::RGBA16_FLOAT, "caustics.historyNormal"));
+    CAUSTICS_TRY(h.objectId, make(rhi::Format::R32_UINT, "caustics.historyObjectId"));
+    h.width = width;
+    h.height = height;
+    h.valid = false;
     return okStatus();
 }
 

@@ -49,6 +49,7 @@ rg::RgTexture DirectLightingPass::addToGraph(rg::RenderGraph& graph, const Frame
         rg::RgTexture albedo = b.read(gbuffer.albedoMetallic, rg::Access::SampledRead);
         rg::RgTexture depth = b.read(gbuffer.linearDepth, rg::Access::SampledRead);
         rg::RgTexture ids = b.read(gbuffer.objectId, rg::Access::SampledRead);
+        if (frame.sceneTlas.valid()) b.read(frame.sceneTlas);   // shadow and surface rays
         out = b.write(b.createTexture("direct", gbufferTextureDesc(kOutputFormat, gbuffer.width, gbuffer.height, "direct")),
                       rg::Access::StorageWrite);
         rg::RgTexture target = out;

@@ -13,6 +13,7 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
     graph.addPass("caustics.forward", [&](rg::PassBuilder& b) {
         const CausticsSettings& s = f.in->settings;
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
+        if (f.in->sceneTlas.valid()) b.read(f.in->sceneTlas);
         f.maps = b.read(f.maps, rg::Access::SampledRead);
         f.emitters = b.read(f.emitters, rg::Access::SampledRead);
         const bool indirect = f.res->device->capabilities().rayTracingIndirect;

@@ -24,6 +24,9 @@ Result<GBufferPass> GBufferPass::create(rhi::IDevice& device, const rhi::Binding
     desc.debugName = "gbuffer";
     GBufferPass pass;
     CAUSTICS_TRY(pass.pipeline_, device.createGraphicsPipeline(desc));
+    desc.depthCompare = rhi::CompareOp::Greater;
+    desc.debugName = "gbuffer (reversed Z)";
+    CAUSTICS_TRY(pass.reversedZPipeline_, device.createGraphicsPipeline(desc));
     return pass;
 }
 
@@ -52,7 +55,8 @@ GBuffer GBufferPass::addToGraph(rg::RenderGraph& graph, const FrameContext& fram
         GBuffer out = g;
         rhi::BindingSetHandle sceneSet = frame.sceneBindings->set;
         rhi::BindingSetHandle cameraSet = frame.cameraSet;
-        rhi::GraphicsPipelineHandle pipeline = pipeline_;
+        const bool reversedZ = frame.camera.frame.w != 0u;
+        rhi::GraphicsPipelineHandle pipeline = reversedZ ? reversedZPipeline_ : pipeline_;
         return [=](rg::PassContext& ctx) {
             rhi::RenderingDesc rd;
             rd.width = out.width;
@@ -65,7 +69,7 @@ GBuffer GBufferPass::addToGraph(rg::RenderGraph& graph, const FrameContext& fram
             }
             rd.depth.texture = ctx.texture(out.depth);
             rd.depth.clear = true;
-            rd.depth.clearDepth = 1.0f;
+            rd.depth.clearDepth = reversedZ ? 0.0f : 1.0f;   // the far plane
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.beginRendering(rd);
             cmd.setGraphicsPipeline(pipeline);

@@ -14,7 +14,9 @@ public:
     GBuffer addToGraph(rg::RenderGraph& graph, const FrameContext& frame) const;
 
 private:
-    rhi::GraphicsPipelineHandle pipeline_;
+    // Standard depth (clear 1, pass nearer = Less) and reversed depth (clear 0, Greater); the camera's
+    // projection picks one each frame (CameraConstants::frame.w).
+    rhi::GraphicsPipelineHandle pipeline_, reversedZPipeline_;
 };
 
 }  // namespace caustics

@@ -1,8 +1,6 @@
 #include "caustics/caustics_module.h"
 
-#include <array>
 #include <cmath>
-#include <cstring>
 #include <string>
 
 #include "../composite/composite_pass.h"
@@ -10,6 +8,9 @@
 #include "../gbuffer/gbuffer_pass.h"
 #include "caustics/caustic_passes.h"
 #include "caustics/frame_context.h"
+#include "caustics_view.h"
+#include "host_gbuffer.h"
+#include "live_scene.h"
 
 namespace caustics {
 
@@ -18,16 +19,14 @@ struct CausticsModule::Impl {
     const scene::Scene* scene = nullptr;
     const scene::GpuScene* gpuScene = nullptr;
     CausticsSettings settings;
-    SceneBindings sceneBindings;
+    std::optional<LiveScene> liveScene;
     rhi::BindingLayoutHandle cameraLayout;
-    std::array<rhi::BufferHandle, kFramesInFlight> cameraBuffers;
-    std::array<rhi::BindingSetHandle, kFramesInFlight> cameraSets;
+    std::unique_ptr<CausticsView> defaultView;
     std::optional<GBufferPass> gbuffer;
     std::optional<DirectLightingPass> direct;
     std::optional<CompositePass> composite;
     CausticResources caustics;
     bool causticsReady = false;
-    std::optional<glm::mat4> lastViewProj;
 };
 
 CausticsModule::CausticsModule(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -38,37 +37,40 @@ Result<std::unique_ptr<CausticsModule>> CausticsModule::create(rhi::DeviceHandle
                                                                const CausticsSettings& settings) {
     if (!device) return makeError("CausticsModule::create: no device");
     CAUSTICS_CHECK(settings.validate());
+    if (scene.instances.empty())
+        return makeError("scene '" + scene.name + "' has no mesh instances: nothing to render or trace");
     auto impl = std::make_unique<Impl>();
     impl->device = device;
     impl->scene = &scene;
     impl->gpuScene = &gpuScene;
     impl->settings = settings;
     rhi::IDevice& dev = *device;
-    CAUSTICS_TRY(impl->sceneBindings, SceneBindings::create(dev, gpuScene, scene));
+    CAUSTICS_TRY(impl->liveScene, LiveScene::create(dev, gpuScene, settings.framesInFlight));
 
     rhi::BindingLayoutDesc cameraLayout;
     cameraLayout.setVisibility(rhi::ShaderStage::All).add(0, rhi::BindingType::ConstantBuffer);
     CAUSTICS_TRY(impl->cameraLayout, dev.createBindingLayout(cameraLayout));
-    for (uint32_t i = 0; i < kFramesInFlight; ++i) {
-        CAUSTICS_TRY(impl->cameraBuffers[i], dev.createBuffer(rhi::BufferDesc()
-                                                                  .setByteSize(sizeof(CameraConstants))
-                                                                  .setUsage(rhi::BufferUsage::Constant)
-                                                                  .setMemory(rhi::MemoryType::Upload)
-                                                                  .setDebugName("camera constants")));
-        CAUSTICS_TRY(impl->cameraSets[i],
-                     dev.createBindingSet(rhi::BindingSetDesc().add(rhi::BindingSetItem::constantBuffer(0, impl->cameraBuffers[i])),
-                                          impl->cameraLayout));
-    }
-    CAUSTICS_TRY(impl->gbuffer, GBufferPass::create(dev, impl->sceneBindings.layout, impl->cameraLayout));
-    CAUSTICS_TRY(impl->direct, DirectLightingPass::create(dev, impl->sceneBindings.layout, impl->cameraLayout));
+    const rhi::BindingLayoutHandle& sceneLayout = impl->liveScene->layout();
+    CAUSTICS_TRY(impl->gbuffer, GBufferPass::create(dev, sceneLayout, impl->cameraLayout));
+    CAUSTICS_TRY(impl->direct, DirectLightingPass::create(dev, sceneLayout, impl->cameraLayout));
     CAUSTICS_TRY(impl->composite, CompositePass::create(dev));
-    return std::unique_ptr<CausticsModule>(new CausticsModule(std::move(impl)));
+    auto module = std::unique_ptr<CausticsModule>(new CausticsModule(std::move(impl)));
+    CAUSTICS_TRY(module->impl_->defaultView, module->createView());
+    return module;
+}
+
+Result<std::unique_ptr<CausticsView>> CausticsModule::createView() {
+    CAUSTICS_TRY(auto view, CausticsView::Impl::create(*impl_->device, impl_->cameraLayout, impl_->settings.framesInFlight));
+    return std::unique_ptr<CausticsView>(new CausticsView(std::move(view)));
 }
 
 const CausticsSettings& CausticsModule::settings() const { return impl_->settings; }
 
 Status CausticsModule::setSettings(const CausticsSettings& settings) {
     CAUSTICS_CHECK(settings.validate());
+    if (settings.framesInFlight != impl_->settings.framesInFlight)
+        return makeError("CausticsModule::setSettings: framesInFlight is fixed at create() (" +
+                         std::to_string(impl_->settings.framesInFlight) + "); create a new module to change it");
     impl_->settings = settings;
     return okStatus();
 }
@@ -95,86 +97,72 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
     if (in.width < 1 || in.height < 1 || in.width > kMaxSide || in.height > kMaxSide)
         return makeError("CausticsModule::addPasses: image size " + std::to_string(in.width) + "x" +
                          std::to_string(in.height) + " is outside [1, 16384]");
-    if (!(in.camera.verticalFovRadians > 0.0f && in.camera.verticalFovRadians < 3.1f) ||
-        !(in.camera.nearPlane > 0.0f && in.camera.farPlane > in.camera.nearPlane) ||
-        glm::length(in.camera.target - in.camera.eye) <= 0.0f)
-        return makeError("CausticsModule::addPasses: FrameInputs::camera is degenerate (fov, near/far or eye == target)");
+    if (m.settings.causticsOnly && !in.hostGBuffer)
+        return makeError("CausticsModule::addPasses: settings.causticsOnly needs FrameInputs::hostGBuffer");
+    CausticsView::Impl& view = in.view ? in.view->impl() : m.defaultView->impl();
+    const std::optional<glm::mat4> prev = view.previousViewProj(in.camera, in.resetHistory);
+    auto camera = makeCameraConstants(in.camera.view, in.camera.proj, in.width, in.height, in.frameIndex,
+                                      prev ? &*prev : nullptr);
+    if (!camera) return makeError("CausticsModule::addPasses: " + camera.message());
+    const uint32_t slot = in.frameIndex % m.settings.framesInFlight;
+    view.addBeginPass(graph, camera.value(), slot);
+    CAUSTICS_TRY(LiveSceneFrame liveScene, m.liveScene->addUpdatePass(graph, *m.scene, slot, in.hostScene));
 
     FrameContext frame;
     frame.device = m.device.get();
     frame.scene = m.scene;
     frame.gpuScene = m.gpuScene;
-    frame.sceneBindings = &m.sceneBindings;
+    frame.sceneBindings = liveScene.bindings;
+    frame.sceneTlas = liveScene.tlas;
     frame.settings = &m.settings;
     frame.width = in.width;
     frame.height = in.height;
     frame.frameIndex = in.frameIndex;
-    glm::mat4 prev = m.lastViewProj && !in.resetHistory ? *m.lastViewProj : glm::mat4(1.0f);
-    frame.camera = makeCameraConstants(in.camera, in.width, in.height, in.frameIndex,
-                                       m.lastViewProj && !in.resetHistory ? &prev : nullptr);
-    m.lastViewProj = frame.camera.viewProj;
-    uint32_t slot = in.frameIndex % kFramesInFlight;
-    frame.cameraBuffer = m.cameraBuffers[slot];
-    frame.cameraSet = m.cameraSets[slot];
+    frame.camera = camera.value();
+    frame.cameraBuffer = view.cameraBuffers[slot];
+    frame.cameraSet = view.cameraSets[slot];
     frame.cameraLayout = m.cameraLayout;
-    // Host-visible memory: the write is visible to the GPU from the next submit on (Vulkan spec 7.9).
-    std::memcpy(frame.cameraBuffer->mappedData(), &frame.camera, sizeof(CameraConstants));
 
     FrameOutputs out;
     if (in.hostGBuffer) {
-        const HostGBuffer& h = *in.hostGBuffer;
-        if (!h.depth || !h.normalRoughness || !h.albedoMetallic || !h.optics || !h.linearDepth || !h.objectId)
-            return makeError("CausticsModule::addPasses: hostGBuffer lacks a texture (all six are required)");
-        auto import = [&](const rhi::TextureHandle& t, const char* name, rhi::Format f) -> Result<rg::RgTexture> {
-            const rhi::TextureDesc& d = t->desc();
-            if (d.format != f || d.width != in.width || d.height != in.height)
-                return makeError(std::string("CausticsModule::addPasses: hostGBuffer.") + name + " is " +
-                                 rhi::formatInfo(d.format).name + " " + std::to_string(d.width) + "x" +
-                                 std::to_string(d.height) + ", expected " + rhi::formatInfo(f).name + " " +
-                                 std::to_string(in.width) + "x" + std::to_string(in.height));
-            return graph.importTexture(std::string("host.") + name, t, h.state, h.state);
-        };
-        CAUSTICS_TRY(out.gbuffer.depth, import(h.depth, "depth", GBufferFormats::kDepth));
-        CAUSTICS_TRY(out.gbuffer.normalRoughness, import(h.normalRoughness, "normalRoughness", GBufferFormats::kNormalRoughness));
-        CAUSTICS_TRY(out.gbuffer.albedoMetallic, import(h.albedoMetallic, "albedoMetallic", GBufferFormats::kAlbedoMetallic));
-        CAUSTICS_TRY(out.gbuffer.optics, import(h.optics, "optics", GBufferFormats::kOptics));
-        CAUSTICS_TRY(out.gbuffer.linearDepth, import(h.linearDepth, "linearDepth", GBufferFormats::kLinearDepth));
-        CAUSTICS_TRY(out.gbuffer.objectId, import(h.objectId, "objectId", GBufferFormats::kObjectId));
-        out.gbuffer.width = in.width;
-        out.gbuffer.height = in.height;
+        CAUSTICS_TRY(out.gbuffer, importHostGBuffer(graph, *in.hostGBuffer, in.width, in.height, m.settings));
     } else {
         out.gbuffer = m.gbuffer->addToGraph(graph, frame);
     }
-
-    out.direct = m.direct->addToGraph(graph, frame, out.gbuffer);
+    if (!m.settings.causticsOnly) out.direct = m.direct->addToGraph(graph, frame, out.gbuffer);
 
     // Caustics: skipped when switched off or when there is no light (nothing can form them).
     if (m.settings.causticsEnabled && !m.scene->lights.empty()) {
         if (!m.causticsReady) {
-            CAUSTICS_TRY(m.caustics, CausticResources::create(*m.device));
+            CAUSTICS_TRY(m.caustics, CausticResources::create(*m.device, m.settings.framesInFlight));
             m.causticsReady = true;
         }
         CausticFrameInputs ci;
         ci.device = m.device.get();
         ci.scene = m.scene;
         ci.gpuScene = m.gpuScene;
-        ci.sceneBindings = &m.sceneBindings;
+        ci.sceneBindings = liveScene.bindings;
+        ci.sceneTlas = liveScene.tlas;
         ci.gbuffer = out.gbuffer;
         ci.camera = frame.camera;
         ci.settings = m.settings;
         ci.frameIndex = in.frameIndex;
         ci.resetHistory = in.resetHistory;
+        ci.history = &view.history;
         CAUSTICS_TRY(CausticOutputs co, addCausticPasses(graph, m.caustics, ci));
         out.caustics = co.radiance;
         out.firstType = co.firstType;
         out.secondType = co.secondType;
         out.causticStats = co.stats;
     }
+    if (m.settings.causticsOnly) return out;
 
     CompositeParams params;
     params.aov = compositeAov(m.settings.aov);
     params.exposure = m.settings.exposure * m.scene->exposure;
-    params.depthRange = std::max(1.0f, std::min(in.camera.farPlane, 50.0f));
+    // Depth AOV: metres shown white; an infinite far plane (clip.y = 0) uses the 50 m cap.
+    const float far = frame.camera.clip.y > 0.0f ? frame.camera.clip.y : 50.0f;
+    params.depthRange = std::max(1.0f, std::min(far, 50.0f));
     if (in.outputTarget) {
         if (in.outputTarget->desc().format != rhi::Format::RGBA8_UNORM ||
             in.outputTarget->desc().width != in.width || in.outputTarget->desc().height != in.height)

@@ -8,16 +8,56 @@
 
 namespace caustics {
 
+Result<rhi::BindingLayoutHandle> SceneBindings::createLayout(rhi::IDevice& device) {
+    namespace s = scene_slots;
+    rhi::BindingLayoutDesc layoutDesc;
+    layoutDesc.setVisibility(rhi::ShaderStage::All)
+        .add(s::kTlas, rhi::BindingType::AccelStruct)
+        .add(s::kPositions, rhi::BindingType::StorageBufferRO)
+        .add(s::kVertices, rhi::BindingType::StorageBufferRO)
+        .add(s::kIndices, rhi::BindingType::StorageBufferRO)
+        .add(s::kMaterials, rhi::BindingType::StorageBufferRO)
+        .add(s::kInstances, rhi::BindingType::StorageBufferRO)
+        .add(s::kLights, rhi::BindingType::StorageBufferRO)
+        .add(s::kSampler, rhi::BindingType::Sampler)
+        .add(s::kTextures, rhi::BindingType::SampledTexture, kMaxSceneTextures);
+    return device.createBindingLayout(layoutDesc);
+}
+
+Result<rhi::BindingSetHandle> SceneBindings::createSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
+                                                       const rhi::SamplerHandle& sampler,
+                                                       const std::vector<rhi::TextureHandle>& textures,
+                                                       const SceneTables& tables) {
+    namespace s = scene_slots;
+    if (!tables.tlas || !tables.positions || !tables.vertices || !tables.indices || !tables.materials ||
+        !tables.instances || !tables.lights)
+        return makeError("SceneBindings: a scene table (TLAS, positions, vertices, indices, materials, instances or lights) is missing");
+    if (textures.empty()) return makeError("SceneBindings: the GPU scene has no texture (expected at least a white 1x1)");
+    if (textures.size() > kMaxSceneTextures)
+        return makeError("SceneBindings: the scene has " + std::to_string(textures.size()) +
+                         " textures, more than kMaxSceneTextures = " + std::to_string(kMaxSceneTextures));
+    rhi::BindingSetDesc setDesc;
+    setDesc.add(rhi::BindingSetItem::accelStructItem(s::kTlas, tables.tlas))
+        .add(rhi::BindingSetItem::storageBuffer(s::kPositions, tables.positions, false))
+        .add(rhi::BindingSetItem::storageBuffer(s::kVertices, tables.vertices, false))
+        .add(rhi::BindingSetItem::storageBuffer(s::kIndices, tables.indices, false))
+        .add(rhi::BindingSetItem::storageBuffer(s::kMaterials, tables.materials, false))
+        .add(rhi::BindingSetItem::storageBuffer(s::kInstances, tables.instances, false))
+        .add(rhi::BindingSetItem::storageBuffer(s::kLights, tables.lights, false))
+        .add(rhi::BindingSetItem::samplerItem(s::kSampler, sampler));
+    // Every element of an array binding must be written (binding.h); spare slots repeat texture 0.
+    for (uint32_t i = 0; i < kMaxSceneTextures; ++i) {
+        const auto& tex = i < textures.size() ? textures[i] : textures[0];
+        setDesc.add(rhi::BindingSetItem::sampledTexture(s::kTextures, tex, i));
+    }
+    return device.createBindingSet(setDesc, layout);
+}
+
 Result<SceneBindings> SceneBindings::create(rhi::IDevice& device, const scene::GpuScene& gpuScene,
                                             const scene::Scene& scene) {
-    namespace s = scene_slots;
     if (scene.instances.empty())
         return makeError("scene '" + scene.name + "' has no mesh instances: nothing to render or trace");
     if (!gpuScene.tlas) return makeError("SceneBindings: the GPU scene has no TLAS (built with buildAccelStructs off?)");
-    if (gpuScene.textures.empty()) return makeError("SceneBindings: the GPU scene has no texture (expected at least a white 1x1)");
-    if (gpuScene.textures.size() > kMaxSceneTextures)
-        return makeError("SceneBindings: the scene has " + std::to_string(gpuScene.textures.size()) +
-                         " textures, more than kMaxSceneTextures = " + std::to_string(kMaxSceneTextures));
 
     SceneBindings b;
     // The light table lives in host-visible memory: it is written once here, and host writes made
@@ -35,35 +75,10 @@ Result<SceneBindings> SceneBindings::create(rhi::IDevice& device, const scene::G
 
     CAUSTICS_TRY(b.sampler, device.createSampler(rhi::SamplerDesc().setFilter(rhi::FilterMode::Linear)
                                                      .setAddress(rhi::AddressMode::Repeat)));
-
-    rhi::BindingLayoutDesc layoutDesc;
-    layoutDesc.setVisibility(rhi::ShaderStage::All)
-        .add(s::kTlas, rhi::BindingType::AccelStruct)
-        .add(s::kPositions, rhi::BindingType::StorageBufferRO)
-        .add(s::kVertices, rhi::BindingType::StorageBufferRO)
-        .add(s::kIndices, rhi::BindingType::StorageBufferRO)
-        .add(s::kMaterials, rhi::BindingType::StorageBufferRO)
-        .add(s::kInstances, rhi::BindingType::StorageBufferRO)
-        .add(s::kLights, rhi::BindingType::StorageBufferRO)
-        .add(s::kSampler, rhi::BindingType::Sampler)
-        .add(s::kTextures, rhi::BindingType::SampledTexture, kMaxSceneTextures);
-    CAUSTICS_TRY(b.layout, device.createBindingLayout(layoutDesc));
-
-    rhi::BindingSetDesc setDesc;
-    setDesc.add(rhi::BindingSetItem::accelStructItem(s::kTlas, gpuScene.tlas))
-        .add(rhi::BindingSetItem::storageBuffer(s::kPositions, gpuScene.positions, false))
-        .add(rhi::BindingSetItem::storageBuffer(s::kVertices, gpuScene.vertices, false))
-        .add(rhi::BindingSetItem::storageBuffer(s::kIndices, gpuScene.indices, false))
-        .add(rhi::BindingSetItem::storageBuffer(s::kMaterials, gpuScene.materials, false))
-        .add(rhi::BindingSetItem::storageBuffer(s::kInstances, gpuScene.instances, false))
-        .add(rhi::BindingSetItem::storageBuffer(s::kLights, b.lights, false))
-        .add(rhi::BindingSetItem::samplerItem(s::kSampler, b.sampler));
-    // Every element of an array binding must be written (binding.h); spare slots repeat texture 0.
-    for (uint32_t i = 0; i < kMaxSceneTextures; ++i) {
-        const auto& tex = i < gpuScene.textures.size() ? gpuScene.textures[i] : gpuScene.textures[0];
-        setDesc.add(rhi::BindingSetItem::sampledTexture(s::kTextures, tex, i));
-    }
-    CAUSTICS_TRY(b.set, device.createBindingSet(setDesc, b.layout));
+    CAUSTICS_TRY(b.layout, createLayout(device));
+    CAUSTICS_TRY(b.set, createSet(device, b.layout, b.sampler, gpuScene.textures,
+                                  SceneTables{gpuScene.tlas, gpuScene.positions, gpuScene.vertices, gpuScene.indices,
+                                              gpuScene.materials, gpuScene.instances, b.lights}));
     return b;
 }
 

@@ -39,6 +39,8 @@ Status CausticsSettings::validate() const {
         return outOfRange("temporalAlpha", temporalAlpha, 1e-6f, 1.0f);
     if (atrousIterations > 8) return outOfRange("atrousIterations", atrousIterations, 0u, 8u);
     if (!std::isfinite(exposure) || exposure <= 0.0f) return makeError("CausticsSettings::exposure must be > 0");
+    if (framesInFlight < 1 || framesInFlight > kMaxFramesInFlight)
+        return outOfRange("framesInFlight", framesInFlight, 1u, kMaxFramesInFlight);
     return okStatus();
 }
 

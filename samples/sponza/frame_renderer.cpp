@@ -31,7 +31,7 @@ Result<std::unique_ptr<FrameRenderer>> FrameRenderer::create(rhi::DeviceHandle d
 Status FrameRenderer::render(const scene::Camera& camera, uint32_t frameIndex, bool readBack) {
     graph_.reset();
     FrameInputs in;
-    in.camera = camera;
+    in.camera = cameraViewMatrices(camera, images_.width, images_.height);
     in.width = images_.width;
     in.height = images_.height;
     in.frameIndex = frameIndex;

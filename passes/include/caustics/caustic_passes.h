@@ -77,8 +77,19 @@ struct CausticSphere {
 };
 static_assert(sizeof(CausticSphere) == 64);
 
-// Objects that live across frames: pipelines, the sphere BLAS/TLAS, filter history. Create once per
-// device and scene (or when the output size changes: it recreates itself).
+// The filter history of one view (paper 3.4): last frame's filtered radiance and the G-buffer it was
+// made with. Each view (camera, split-screen half, reflection probe) owns one; sized on first use.
+struct CausticViewHistory {
+    rhi::TextureHandle color, depth, normal, objectId;
+    uint32_t width = 0, height = 0;
+    // True once a frame's caustics.history pass has been RECORDED (graph execution), so a graph that is
+    // built and never executed does not make the history look valid.
+    bool valid = false;
+};
+
+// Objects that live across frames: pipelines, the sphere BLAS/TLAS. Create once per device and scene
+// (the sphere TLAS grows with the output size). `framesInFlight`: how many frames the host may have
+// on the GPU at once (per-frame binding sets are kept that long).
 class CausticResources {
 public:
     CausticResources();
@@ -86,7 +97,7 @@ public:
     CausticResources(CausticResources&&) noexcept;
     CausticResources& operator=(CausticResources&&) noexcept;
 
-    static Result<CausticResources> create(rhi::IDevice& device);
+    static Result<CausticResources> create(rhi::IDevice& device, uint32_t framesInFlight = 3);
 
     struct Impl;
     Impl* impl() { return impl_.get(); }
@@ -105,6 +116,10 @@ struct CausticFrameInputs {
     CausticsSettings settings;
     uint32_t frameIndex = 0;
     bool resetHistory = false;         // camera cut: the filter forgets the past
+    // The view's filter history; null: one history owned by CausticResources (a single view).
+    CausticViewHistory* history = nullptr;
+    // The scene TLAS as a graph resource when it is rebuilt this frame (frame_context.h); else invalid.
+    rg::RgAccelStruct sceneTlas;
 };
 
 struct CausticOutputs {

@@ -1,23 +1,27 @@
 #pragma once
 // The public entry of the caustics module. A host creates one per (device, scene) and, every frame,
-// adds its passes to the host's render graph:
+// adds its passes to the host's render graph (docs/embedding.md has the whole contract):
 //
 //   auto module = CausticsModule::create(device, scene, gpuScene, settings);   // Result<unique_ptr<>>
 //   graph.reset();
-//   FrameInputs in{.camera = cam, .width = w, .height = h, .frameIndex = n};
-//   auto out = (*module)->addPasses(graph, in);      // G-buffer, direct, caustics, composite
+//   FrameInputs in{.camera = cameraViewMatrices(cam, w, h), .width = w, .height = h, .frameIndex = n};
+//   auto out = (*module)->addPasses(graph, in);      // scene update, G-buffer, direct, caustics, composite
 //   graph.markOutput(out->display);
 //   graph.execute(*device, *cmd);  ...submit...; graph.texture(out->display) is the image
 //   graph.passTimeMs("direct_lighting")           // per-pass GPU medians come from the graph
 //
-// Pass names: gbuffer, direct_lighting, caustics.* (caustic_passes.h), composite.
-// A host G-buffer (caustics/gbuffer.h contract) replaces our G-buffer pass; a host output target
-// (RGBA8_UNORM with Storage usage) receives the display image instead of a transient.
+// Pass names: view.begin, scene.update, gbuffer, direct_lighting, caustics.* (caustic_passes.h),
+// composite. The scene is read every frame: instances, lights and materials may change between
+// frames (live_scene.h). A host G-buffer (caustics/gbuffer.h contract) replaces our G-buffer pass; a
+// host output target (RGBA8_UNORM with Storage usage) receives the display image instead of a
+// transient. settings.causticsOnly leaves compositing to the host.
 #include <memory>
 #include <optional>
 
+#include "caustics/camera_view.h"
 #include "caustics/caustics_settings.h"
 #include "caustics/gbuffer.h"
+#include "caustics/host_scene.h"
 #include "caustics/render_graph/render_graph.h"
 #include "caustics/rhi/device.h"
 #include "caustics/scene/gpu_scene.h"
@@ -25,22 +29,42 @@
 
 namespace caustics {
 
+// The state of one view that lives across frames: its filter history, its previous view-projection
+// and its camera buffers. A host rendering several views per frame (split screen, a reflection probe)
+// holds one per view (CausticsModule::createView); each keeps its own history. Everything in it is
+// committed when a graph EXECUTES, so a graph built and dropped changes nothing.
+class CausticsView {
+public:
+    ~CausticsView();
+    struct Impl;
+    Impl& impl() { return *impl_; }
+
+private:
+    friend class CausticsModule;
+    explicit CausticsView(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
 struct FrameInputs {
-    scene::Camera camera;
+    CameraView camera;                         // host matrices (camera_view.h): jitter, reversed Z, infinite far
     uint32_t width = 0;
     uint32_t height = 0;
-    uint32_t frameIndex = 0;
-    bool resetHistory = false;                 // camera cut: temporal filtering forgets the past
+    uint32_t frameIndex = 0;                   // selects the frame-in-flight slot: frameIndex % framesInFlight
+    bool resetHistory = false;                 // camera cut of THIS view: its filter forgets the past
+    CausticsView* view = nullptr;              // null: the module's default view
     std::optional<HostGBuffer> hostGBuffer;    // imported instead of running our G-buffer pass
+    HostSceneTables hostScene;                 // the host's TLAS / scene tables, each optional (host_scene.h)
     rhi::TextureHandle outputTarget;           // optional RGBA8_UNORM, Storage usage
     rhi::ResourceState outputState = rhi::ResourceState::ShaderResource;   // before and after the graph
 };
 
 struct FrameOutputs {
+    // display, hdr and direct are invalid in settings.causticsOnly mode.
     rg::RgTexture display;     // RGBA8_UNORM: tone-mapped, sRGB-encoded settings.aov (or outputTarget)
     rg::RgTexture hdr;         // RGBA32_FLOAT: settings.aov in linear units (no exposure, no tone map)
     rg::RgTexture direct;      // RGBA16_FLOAT direct radiance
-    rg::RgTexture caustics;    // RGBA32_FLOAT caustic radiance; invalid when caustics are off
+    rg::RgTexture caustics;    // RGBA32_FLOAT caustic radiance (cd/m^2), filtered when settings.filter;
+                               // invalid when caustics are off or the scene has no light
     rg::RgTexture firstType, secondType;   // unfiltered caustic components; invalid when off
     GBuffer gbuffer;
     rg::RgBuffer causticStats; // uint32[kStatCount] (caustic_passes.h); causticStatsWarnings() reads it
@@ -48,13 +72,12 @@ struct FrameOutputs {
 
 class CausticsModule {
 public:
-    // The frames whose camera constants may be in flight at once: frame n reuses the camera buffer
-    // of frame n - kFramesInFlight, so the host must have waited for that frame by then.
-    static constexpr uint32_t kFramesInFlight = 3;
-
     // Validates settings (errors name the field) and builds pipelines and scene bindings. `scene` and
-    // `gpuScene` must outlive the module. A scene without lights is fine: it renders black direct light
-    // and no caustics.
+    // `gpuScene` must outlive the module; `scene` is read again at every addPasses (a live scene; its
+    // meshes and textures must stay those gpuScene was made from). A scene without lights is fine: it
+    // renders black direct light and no caustics. settings.framesInFlight is fixed from here on: frame
+    // n reuses the per-frame buffers of frame n - framesInFlight, so the host must have waited for
+    // that frame before executing frame n's graph.
     static Result<std::unique_ptr<CausticsModule>> create(rhi::DeviceHandle device, const scene::Scene& scene,
                                                           const scene::GpuScene& gpuScene,
                                                           const CausticsSettings& settings = {});
@@ -62,8 +85,11 @@ public:
 
     Result<FrameOutputs> addPasses(rg::RenderGraph& graph, const FrameInputs& inputs);
 
+    // A further view with its own history and camera buffers (the module has one default view).
+    Result<std::unique_ptr<CausticsView>> createView();
+
     const CausticsSettings& settings() const;
-    // Validated like create(); takes effect at the next addPasses.
+    // Validated like create(); takes effect at the next addPasses. framesInFlight cannot change.
     Status setSettings(const CausticsSettings& settings);
 
     struct Impl;

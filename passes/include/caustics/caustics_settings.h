@@ -56,12 +56,19 @@ struct CausticsSettings {
     // switch for the caustic passes as a whole (off: caustic radiance is zero, direct lighting stays).
     CausticsAov aov = CausticsAov::Final;
     bool causticsEnabled = true;
+    // Embedding (docs/embedding.md). causticsOnly: the host composites; none of our G-buffer, direct
+    // lighting or composite passes run, FrameInputs::hostGBuffer is required and the outputs are the
+    // linear caustic radiance images. framesInFlight: how many frames the host keeps on the GPU at
+    // once (frame n reuses the per-frame buffers of frame n - framesInFlight); fixed at create().
+    bool causticsOnly = false;
+    uint32_t framesInFlight = 3;
 
     // Limits beyond which a setting is refused (not clamped).
     static constexpr uint32_t kMaxMapResolution = 8192;
     static constexpr float kMaxRaysPerTexel = 256.0f;
     static constexpr uint32_t kMaxSpecularDepth = 31;
     static constexpr uint32_t kMaxStoredHits = 1u << 26;
+    static constexpr uint32_t kMaxFramesInFlight = 16;
 
     Status validate() const;
 };

@@ -7,6 +7,7 @@
 #include "caustics/camera_constants.h"
 #include "caustics/caustics_settings.h"
 #include "caustics/scene_bindings.h"
+#include "caustics/render_graph/resource_handle.h"
 #include "caustics/rhi/device.h"
 #include "caustics/scene/gpu_scene.h"
 #include "caustics/scene/scene.h"
@@ -22,6 +23,9 @@ struct FrameContext {
     const scene::Scene* scene = nullptr;
     const scene::GpuScene* gpuScene = nullptr;
     const SceneBindings* sceneBindings = nullptr;
+    // The scene TLAS as a graph resource when the module rebuilds it this frame (live scene): passes
+    // that trace declare a read so the graph orders them after the build. Invalid for a frozen scene.
+    rg::RgAccelStruct sceneTlas;
     const CausticsSettings* settings = nullptr;
     CameraConstants camera;
     rhi::BufferHandle cameraBuffer;           // host-visible uniform buffer holding `camera`

@@ -2,7 +2,8 @@
 // The G-buffer contract (DESIGN.md pass 1). Every pass after the G-buffer reads these W x H textures
 // and nothing else about the camera view; a host engine may supply its own (imported into the graph)
 // as long as it follows the formats and encodings below. Background pixels: depth 1, linearDepth 0,
-// objectId 0 (the other targets are cleared to 0).
+// objectId 0 (the other targets are cleared to 0). Which channels a host must supply, and why, is in
+// hostGBufferRequirements() and docs/embedding.md; `depth` is never read by the module.
 //
 //   depth            D32_FLOAT     hardware depth, 0 near .. 1 far (CameraConstants::proj, Vulkan Z 0..1)
 //   normalRoughness  RGBA16_FLOAT  xyz world-space unit shading normal, flipped to face the viewer;
@@ -11,7 +12,9 @@
 //   optics           RGBA16_FLOAT  x reflectance weight, y transmittance weight, z IOR,
 //                                  w 1 if Material::isSpecular() else 0 (see below)
 //   linearDepth      R32_FLOAT     view-space distance along the camera axis (metres); 0 = background
-//   objectId         R32_UINT      instance index + 1; 0 = background
+//   objectId         R32_UINT      instance index + 1; 0 = background. "Instance index" is the
+//                                  instance's position in scene::Scene::instances, which is also its
+//                                  TLAS instance id and its row in the instance table (live_scene.h)
 //
 // optics.x = metallic + (1 - metallic) * specular * F0(ior)   (normal-incidence reflectance; glTF
 //            metallic-roughness + KHR_materials_specular; F0 = ((ior-1)/(ior+1))^2)
@@ -51,12 +54,26 @@ struct GBuffer {
     }
 };
 
-// Physical textures of a host G-buffer (imported by CausticsModule::addPasses when given).
+// Physical textures of a host G-buffer (imported by CausticsModule::addPasses when given). Every
+// texture the module reads needs Sampled usage. `depth` is optional (the module never reads it).
 struct HostGBuffer {
     rhi::TextureHandle depth, normalRoughness, albedoMetallic, optics, linearDepth, objectId;
     // The state the host leaves them in before the graph runs and wants them in afterwards.
     rhi::ResourceState state = rhi::ResourceState::ShaderResource;
 };
+
+// Which channels the passes of a configuration read (true = the host must supply it):
+//   linearDepth, objectId  always: the first-type splat's visibility test (paper Fig. 4b: same object,
+//                          same depth), the filter's reprojection and edge stops;
+//   optics                 settings.secondType: the backward pass starts at pixels with optics.w = 1;
+//   normalRoughness        settings.filter (edge stops) or our direct lighting/composite;
+//   albedoMetallic         our direct lighting/composite (not in causticsOnly mode).
+struct HostGBufferRequirements {
+    bool normalRoughness = false, albedoMetallic = false, optics = false;
+};
+
+struct CausticsSettings;
+HostGBufferRequirements hostGBufferRequirements(const CausticsSettings& settings);
 
 // Texture description of each target (usage flags for the accesses are added by the graph).
 rhi::TextureDesc gbufferTextureDesc(rhi::Format format, uint32_t width, uint32_t height, const char* name);

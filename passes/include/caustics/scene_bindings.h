@@ -1,7 +1,9 @@
 #pragma once
 // The GPU scene as one binding set (descriptor set), the layout shaders/vulkan/scene/scene.glsl
 // declares (binding numbers are listed there). Every pass that traces or shades scene geometry binds
-// it, by default as set 0. Built once per scene; the lights buffer is owned here.
+// it, by default as set 0. SceneBindings::create binds a frozen scene (lights uploaded once; tests and
+// tools); the module binds a live scene through one SceneBindings per frame-in-flight slot whose
+// tables and TLAS it rewrites every frame (passes/module/live_scene.h, docs/embedding.md).
 #include <cstdint>
 
 #include "caustics/rhi/device.h"
@@ -20,12 +22,31 @@ inline constexpr uint32_t kTlas = 0, kPositions = 1, kVertices = 2, kIndices = 3
                           kInstances = 5, kLights = 6, kSampler = 7, kTextures = 8;
 }
 
+// What set 0 binds besides the textures (layouts: caustics/scene/gpu_types.h, caustics/host_scene.h).
+struct SceneTables {
+    rhi::AccelStructHandle tlas;
+    rhi::BufferHandle positions, vertices, indices;
+    rhi::BufferHandle materials;  // GpuMaterial[]
+    rhi::BufferHandle instances;  // GpuInstance[], indexed by the TLAS instance id
+    rhi::BufferHandle lights;     // header + GpuLight[] (caustics/gpu_light.h)
+
+    bool operator==(const SceneTables&) const = default;
+};
+
 struct SceneBindings {
     rhi::BindingLayoutHandle layout;
     rhi::BindingSetHandle set;
     rhi::BufferHandle lights;     // header + GpuLight[] (caustics/gpu_light.h)
     rhi::SamplerHandle sampler;
     uint32_t lightCount = 0;
+
+    // The layout of set 0 (the same object for every slot, so pipelines are built once).
+    static Result<rhi::BindingLayoutHandle> createLayout(rhi::IDevice& device);
+    // Set 0 over `tables` and `textures` (at most kMaxSceneTextures, at least one).
+    static Result<rhi::BindingSetHandle> createSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
+                                                   const rhi::SamplerHandle& sampler,
+                                                   const std::vector<rhi::TextureHandle>& textures,
+                                                   const SceneTables& tables);
 
     // Fails when the scene has more than kMaxSceneTextures textures (message says how many) or no TLAS.
     static Result<SceneBindings> create(rhi::IDevice& device, const scene::GpuScene& gpuScene,

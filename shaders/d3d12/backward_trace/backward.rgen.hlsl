@@ -102,8 +102,10 @@ void main() {
     float3 origin = cam.eye;
     // A jittered position inside the pixel: accumulated frames converge to the pixel's mean.
     float2 pixelPosition = float2(p) + rngNextFloat2(rng);
-    float3 dir = cameraRayDirection(cam, pixelPosition);
-    RayDifferential rd = pinholeRayDifferential(cam, pixelPosition);
+    // The host's projection jitter shifts the image against the centred pinhole (cameraJitter).
+    float2 pinholePosition = pixelPosition - cameraJitter(camera);
+    float3 dir = cameraRayDirection(cam, pinholePosition);
+    RayDifferential rd = pinholeRayDifferential(cam, pinholePosition);
     float3 throughput = (float3)1.0f;
     float3 sigma = (float3)0.0f;
     float pathLength = 0.0f;

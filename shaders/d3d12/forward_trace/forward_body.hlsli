@@ -48,7 +48,7 @@ BrdfMaterial receiverBrdfMaterial(SurfaceHit h) {
 void splatFirstType(CameraConstants camera, float3 x, float3 nFacing, uint objectId, float3 flux, float3 incoming,
                     BrdfMaterial brdf) {
     PinholeCamera cam = cameraPinhole(camera);
-    CameraProjection pr = projectToCamera(cam, x);
+    CameraProjection pr = cameraProject(camera, x);
     if (!pr.valid || pr.depth < camera.clip.x) return;
     float3 toEye = (cam.eye - x) / pr.distance;
     float cosSurface = dot(nFacing, toEye);

@@ -11,12 +11,12 @@ struct CameraConstants {
     float4x4 viewProj;
     float4x4 invViewProj;
     float4x4 prevViewProj;
-    float4 eye;
+    float4 eye;       // w jitter x (pixels)
     float4 forward;   // w tan(fovY / 2)
     float4 right;     // w aspect
-    float4 up;
-    float4 clip;      // x near, y far, z 1/width, w 1/height
-    uint4 frame;      // x width, y height, z frame index
+    float4 up;        // w jitter y (pixels)
+    float4 clip;      // x near, y far (0 = infinite), z 1/width, w 1/height
+    uint4 frame;      // x width, y height, z frame index, w 1 = reversed Z
 };
 
 // Vulkan clip space has y down, D3D's y up: negating y makes the rasterized image (and the winding
@@ -36,7 +36,20 @@ PinholeCamera cameraPinhole(CameraConstants c) {
     return p;
 }
 
-float3 cameraPixelDirection(CameraConstants c, float2 pixel) { return cameraRayDirection(cameraPinhole(c), pixel); }
+// The host's sub-pixel jitter (camera.glsl explains it).
+float2 cameraJitter(CameraConstants c) { return float2(c.eye.w, c.up.w); }
+
+float3 cameraPixelDirection(CameraConstants c, float2 pixel) {
+    return cameraRayDirection(cameraPinhole(c), pixel - cameraJitter(c));
+}
+
+CameraProjection cameraProject(CameraConstants c, float3 x) {
+    PinholeCamera cam = cameraPinhole(c);
+    CameraProjection p = projectToCamera(cam, x);
+    p.pixel += cameraJitter(c);
+    p.valid = p.depth > 0.0f && p.pixel.x >= 0.0f && p.pixel.x < cam.width && p.pixel.y >= 0.0f && p.pixel.y < cam.height;
+    return p;
+}
 
 float3 cameraWorldPosition(CameraConstants c, float2 pixel, float linearDepth) {
     float3 d = cameraPixelDirection(c, pixel);

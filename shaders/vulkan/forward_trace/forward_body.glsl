@@ -50,7 +50,7 @@ void splatFirstType(CausticHit hit) {
     vec3 x = hit.position;
     vec3 nFacing = hit.normal;
     PinholeCamera cam = cameraPinhole(camera);
-    CameraProjection pr = projectToCamera(cam, x);
+    CameraProjection pr = cameraProject(camera, x);
     if (!pr.valid || pr.depth < camera.clip.x) return;
     vec3 toEye = (cam.eye - x) / pr.distance;
     float cosSurface = dot(nFacing, toEye);

@@ -23,7 +23,7 @@ Result<RenderedFrame> renderFrame(const rhi::DeviceHandle& device, const scene::
     CAUSTICS_TRY(std::unique_ptr<CausticsModule> module, CausticsModule::create(device, scene, gpuScene, settings));
     rg::RenderGraph graph;
     FrameInputs in;
-    in.camera = camera;
+    in.camera = cameraViewMatrices(camera, width, height);
     in.width = width;
     in.height = height;
     CAUSTICS_TRY(FrameOutputs out, module->addPasses(graph, in));

@@ -61,7 +61,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, const
         fc.gpuScene = &gpuScene;
         fc.sceneBindings = &bindings;
         fc.settings = &settings;
-        fc.camera = makeCameraConstants(camera, width, height, frame, frame ? &prevViewProj : nullptr);
+        CAUSTICS_TRY(fc.camera, makeCameraConstants(camera, width, height, frame, frame ? &prevViewProj : nullptr));
         prevViewProj = fc.camera.viewProj;
         std::memcpy(cameraBuffer->mappedData(), &fc.camera, sizeof(CameraConstants));
         fc.cameraBuffer = cameraBuffer;

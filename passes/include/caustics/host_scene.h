@@ -1,0 +1,31 @@
+#pragma once
+// Scene tables a host engine already has, handed to the module instead of the ones it builds from
+// scene::Scene (docs/embedding.md "Host scene tables"). Each handle is optional: a null one means "use
+// the module's". The layouts are the module's (caustics/scene/gpu_types.h, caustics/scene/gpu_scene.h):
+//
+//   tlas       instance i: instanceId = i (the row of `instances`), mask scene::kMaskSpecular for
+//              specular objects else scene::kMaskDiffuse, hitGroupOffset 0, opaque triangle geometry
+//   positions  float3 per vertex (tightly packed, 12 bytes)
+//   vertices   GpuVertex per vertex (48 bytes: normal, u, tangent, v)
+//   indices    uint32, relative to the instance's firstVertex
+//   materials  GpuMaterial[] (96 bytes)
+//   instances  GpuInstance[] (160 bytes): objectToWorld, normalToWorld, material, firstVertex,
+//              firstIndex, triangleCount, objectId, mesh, flags (kInstanceSpecular)
+//
+// The CPU scene (scene::Scene) still tells the module the lights, the specular objects' world bounds
+// (caustic map frusta) and, for its own G-buffer and map rasterization, each instance's mesh; it must
+// describe the same instances in the same order as these tables.
+#include "caustics/rhi/accel_struct.h"
+#include "caustics/rhi/resource_state.h"
+#include "caustics/rhi/resources.h"
+
+namespace caustics {
+
+struct HostSceneTables {
+    rhi::AccelStructHandle tlas;
+    // The state the host leaves its TLAS in before the graph and wants it in after (built and readable).
+    rhi::ResourceState tlasState = rhi::ResourceState::AccelStructRead;
+    rhi::BufferHandle positions, vertices, indices, materials, instances;
+};
+
+}  // namespace caustics

@@ -1,0 +1,143 @@
+// Frames and views (docs/embedding.md "Frames and views"): per-view filter history, per-frame state
+// committed at execution, host-chosen frames in flight.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "caustics/scene/gpu_scene.h"
+#include "module/caustics_view.h"
+#include "gpu_test.h"
+#include "module_frames.h"
+#include "spot_sphere_scene.h"
+
+namespace caustics::test {
+namespace {
+
+constexpr uint32_t kSize = 48;
+
+class Views : public GpuTest {};
+class FramesInFlight : public GpuTest {};
+
+CausticsSettings filteredSettings(uint32_t framesInFlight = 3) {
+    CausticsSettings s;
+    s.mapResolution = 64;
+    s.raysPerTexel = 2.0f;
+    s.secondType = false;
+    s.filter = true;
+    s.temporalAlpha = 0.2f;
+    s.maxStoredHits = 1u << 12;
+    s.framesInFlight = framesInFlight;
+    return s;
+}
+
+scene::Camera sideCamera() {
+    scene::Camera c = spotSphereCamera();
+    c.eye = {1.8f, 1.2f, 1.4f};   // the same caustic from another side: a different history
+    return c;
+}
+
+ViewRequest request(const scene::Camera& cam, CausticsView* view) {
+    ViewRequest v;
+    v.inputs.camera = cameraViewMatrices(cam, kSize, kSize);
+    v.inputs.width = v.inputs.height = kSize;
+    v.inputs.view = view;
+    return v;
+}
+
+// Float atomics make two runs of the same frames differ slightly; this many frames give the filter a
+// history worth sharing.
+constexpr uint32_t kFrames = 4;
+
+// Measured (lavapipe 2026-11-30, "[ measured ]" lines): the same view rendered twice alone differs by
+// kMeasuredRepeatL1 (atomic summation order); the main view and the side view differ by about 1 (they
+// see different pixels), so a history leaking from one view into the other would move the result by a
+// large fraction of that. Bound: 4x the repeat noise, far below any leak.
+constexpr double kMeasuredRepeatL1 = 1e-6;
+constexpr double kViewBound = 4.0 * kMeasuredRepeatL1 + 1e-6;
+
+TEST_F(Views, TwoViewsInOneFrameKeepIndependentHistories) {
+    scene::Scene scene = spotSphereScene();
+    auto gpuScene = scene::GpuScene::create(*device, scene);
+    ASSERT_TRUE(gpuScene) << gpuScene.message();
+    const scene::Camera main = spotSphereCamera(), side = sideCamera();
+
+    auto alone = [&]() -> Result<FrameImage> {
+        CAUSTICS_TRY(auto module, CausticsModule::create(device, scene, gpuScene.value(), filteredSettings()));
+        CAUSTICS_TRY(auto frames, runModuleFrames(*device, *module, kFrames, 1, [&](uint32_t) {
+            return std::vector<ViewRequest>{request(main, nullptr)};
+        }));
+        return frames.back()[0];
+    };
+    auto mainAlone = alone();
+    ASSERT_TRUE(mainAlone) << mainAlone.message();
+    auto mainAgain = alone();
+    ASSERT_TRUE(mainAgain) << mainAgain.message();
+
+    auto module = CausticsModule::create(device, scene, gpuScene.value(), filteredSettings());
+    ASSERT_TRUE(module) << module.message();
+    auto sideView = module.value()->createView();
+    ASSERT_TRUE(sideView) << sideView.message();
+    auto both = runModuleFrames(*device, *module.value(), kFrames, 1, [&](uint32_t) {
+        return std::vector<ViewRequest>{request(main, nullptr), request(side, sideView.value().get())};
+    });
+    ASSERT_TRUE(both) << both.message();
+    const FrameImage& mainWithSide = both.value().back()[0];
+    const FrameImage& sideImage = both.value().back()[1];
+
+    const double repeat = relativeL1(mainAgain.value(), mainAlone.value());
+    const double withSide = relativeL1(mainWithSide, mainAlone.value());
+    const double viewsApart = relativeL1(sideImage, mainAlone.value());
+    std::printf("[ measured ] main alone vs again %.3g, main with side view vs alone %.3g, side vs main %.3g\n",
+                repeat, withSide, viewsApart);
+    EXPECT_GT(viewsApart, 0.3) << "the two views must see different images for the test to mean anything";
+    EXPECT_LT(withSide, kViewBound);
+}
+
+// A graph built and dropped commits nothing: the view's history stays as the last executed frame left it.
+TEST_F(Views, GraphBuiltButNotExecutedLeavesTheHistoryAlone) {
+    scene::Scene scene = spotSphereScene();
+    auto gpuScene = scene::GpuScene::create(*device, scene);
+    ASSERT_TRUE(gpuScene) << gpuScene.message();
+    auto module = CausticsModule::create(device, scene, gpuScene.value(), filteredSettings());
+    ASSERT_TRUE(module) << module.message();
+    auto view = module.value()->createView();
+    ASSERT_TRUE(view) << view.message();
+    rg::RenderGraph dropped;
+    FrameInputs in = request(spotSphereCamera(), view.value().get()).inputs;
+    ASSERT_TRUE(module.value()->addPasses(dropped, in));
+    EXPECT_FALSE(view.value()->impl().history.valid) << "built, not executed: no history yet";
+    EXPECT_FALSE(view.value()->impl().lastViewProj.has_value()) << "built, not executed: no previous matrix";
+}
+
+// Measured (lavapipe 2026-11-30): 5 in flight vs 1 in flight over 8 frames of a moving scene, worst
+// frame kMeasuredInFlightL1 (float-atomic order only). Bound 4x that; a frame reading another frame's
+// tables, camera or history differs by 0.1 or more.
+constexpr double kMeasuredInFlightL1 = 1e-6;
+constexpr double kInFlightBound = 4.0 * kMeasuredInFlightL1 + 1e-6;
+
+TEST_F(FramesInFlight, FiveInFlightGiveTheSameImagesAsOne) {
+    constexpr uint32_t kLiveFrames = 8;
+    auto run = [&](uint32_t inFlight) -> Result<std::vector<std::vector<FrameImage>>> {
+        scene::Scene scene = spotSphereScene();
+        const glm::mat4 rest = scene.instances[sphereInstance(scene)].transform;
+        CAUSTICS_TRY(scene::GpuScene gpuScene, scene::GpuScene::create(*device, scene));
+        CAUSTICS_TRY(auto module, CausticsModule::create(device, scene, gpuScene, filteredSettings(inFlight)));
+        return runModuleFrames(*device, *module, kLiveFrames, inFlight, [&](uint32_t n) {
+            poseSpotSphere(scene, float(n) / float(kLiveFrames - 1), rest);
+            return std::vector<ViewRequest>{request(spotSphereCamera(), nullptr)};
+        });
+    };
+    auto one = run(1);
+    ASSERT_TRUE(one) << one.message();
+    auto five = run(5);
+    ASSERT_TRUE(five) << five.message();
+    double worst = 0.0;
+    for (uint32_t n = 0; n < kLiveFrames; ++n) worst = std::max(worst, relativeL1(five.value()[n][0], one.value()[n][0]));
+    const double step = relativeL1(one.value()[kLiveFrames - 1][0], one.value()[0][0]);
+    std::printf("[ measured ] 5 vs 1 in flight: worst frame %.3g; first vs last frame %.3g\n", worst, step);
+    EXPECT_GT(step, 0.1) << "the scene must change over the run for the test to mean anything";
+    EXPECT_LT(worst, kInFlightBound);
+}
+
+}  // namespace
+}  // namespace caustics::test

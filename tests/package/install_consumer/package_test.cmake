@@ -1,0 +1,50 @@
+# Run by CTest (tests/package/CMakeLists.txt). Fails with a message naming the step.
+cmake_minimum_required(VERSION 3.25)
+file(REMOVE_RECURSE "${WORK_DIR}")
+set(staging "${WORK_DIR}/staging")
+set(prefix "${WORK_DIR}/moved/prefix")
+
+function(run step)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "package test: ${step} failed (${rc}):\n${out}\n${err}")
+  endif()
+  message(STATUS "package test: ${step}: ok")
+endfunction()
+
+# 1. Install, then move the prefix: a relocatable package works from wherever it lands.
+run("install" ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${staging}")
+file(MAKE_DIRECTORY "${WORK_DIR}/moved")
+file(RENAME "${staging}" "${prefix}")
+
+# 2. Nothing of the build machine in the exported targets, nothing stray installed.
+file(GLOB targetFiles "${prefix}/lib*/cmake/caustics/causticsTargets*.cmake")
+if(NOT targetFiles)
+  message(FATAL_ERROR "package test: no causticsTargets*.cmake under ${prefix}")
+endif()
+foreach(f ${targetFiles})
+  file(READ "${f}" text)
+  foreach(forbidden "${BUILD_DIR}" "${SOURCE_DIR}" "${staging}")
+    string(FIND "${text}" "${forbidden}" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "package test: ${f} holds the build-machine path ${forbidden}")
+    endif()
+  endforeach()
+endforeach()
+file(GLOB_RECURSE installed RELATIVE "${prefix}" "${prefix}/*")
+foreach(f ${installed})
+  if(f MATCHES "^bin/" OR f MATCHES "(^|/)\\.[^/]*$")
+    message(FATAL_ERROR "package test: stray file installed: ${f} (no executables or marker files belong in the package)")
+  endif()
+endforeach()
+
+# 3. A consumer that links only caustics::passes configures, builds and runs (lavapipe).
+set(consumerBuild "${WORK_DIR}/consumer-build")
+set(launcher "")
+if(COMPILER_LAUNCHER)
+  set(launcher "-DCMAKE_CXX_COMPILER_LAUNCHER=${COMPILER_LAUNCHER}")
+endif()
+run("configure consumer" ${CMAKE_COMMAND} -S "${CONSUMER_DIR}" -B "${consumerBuild}" -G "${GENERATOR}"
+    "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" ${launcher} -DCMAKE_BUILD_TYPE=Release)
+run("build consumer" ${CMAKE_COMMAND} --build "${consumerBuild}")
+run("run consumer" "${consumerBuild}/caustics_consumer")
