@@ -34,7 +34,8 @@ void appendBytes(std::vector<uint8_t>& out, const T& value) {
     out.insert(out.end(), p, p + sizeof(T));
 }
 
-Result<PackedFrame> packFrame(const scene::Scene& scene, const scene::GpuScene& gpu) {
+// ownTlas: the module builds the TLAS (needs the GpuScene's BLASes); false when the host hands in its own.
+Result<PackedFrame> packFrame(const scene::Scene& scene, const scene::GpuScene& gpu, bool ownTlas) {
     if (scene.instances.empty())
         return makeError("scene '" + scene.name + "' has no mesh instances: nothing to render or trace");
     constexpr size_t kMaxInstances = 1u << 24;   // TLAS instance ids have 24 bits
@@ -53,7 +54,8 @@ Result<PackedFrame> packFrame(const scene::Scene& scene, const scene::GpuScene& 
     if (p.materials.empty()) appendBytes(p.materials, scene::GpuMaterial{});   // never an empty storage buffer
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const scene::Instance& inst = scene.instances[i];
-        if (inst.mesh >= scene.meshes.size() || inst.mesh >= gpu.meshRanges.size() || inst.mesh >= gpu.blases.size())
+        if (inst.mesh >= scene.meshes.size() || inst.mesh >= gpu.meshRanges.size() ||
+            (ownTlas && inst.mesh >= gpu.blases.size()))
             return makeError("scene instance " + std::to_string(i) + " uses mesh " + std::to_string(inst.mesh) +
                              ", the GPU scene has " + std::to_string(gpu.meshRanges.size()) +
                              " meshes (meshes are fixed at GpuScene::create; instances of them may come and go)");
@@ -63,6 +65,7 @@ Result<PackedFrame> packFrame(const scene::Scene& scene, const scene::GpuScene& 
                              std::to_string(scene.materials.size()));
         const scene::GpuMeshRange& range = gpu.meshRanges[inst.mesh];
         appendBytes(p.instances, scene::toGpuInstance(scene, inst, range.firstVertex, range.firstIndex));
+        if (!ownTlas) continue;
         rhi::InstanceDesc d = scene::makeInstanceDesc(scene, i);
         d.blasAddress = gpu.blases[inst.mesh]->deviceAddress();
         appendBytes(p.tlas, d);
@@ -84,7 +87,8 @@ Result<rhi::BufferHandle> hostTable(rhi::IDevice& device, uint64_t bytes, const 
 }
 
 // Grows a slot's tables to hold `p` (doubling, so a growing scene reallocates rarely).
-Status ensureCapacity(rhi::IDevice& device, const scene::GpuScene& gpu, LiveScene::Slot& s, const PackedFrame& p) {
+Status ensureCapacity(rhi::IDevice& device, const scene::GpuScene& gpu, LiveScene::Slot& s, const PackedFrame& p,
+                      bool ownTlas) {
     bool rebind = false;
     auto grow = [&](rhi::BufferHandle& buffer, uint64_t& capacity, uint64_t needed, const char* name) -> Status {
         if (buffer && capacity >= needed) return okStatus();
@@ -96,7 +100,7 @@ Status ensureCapacity(rhi::IDevice& device, const scene::GpuScene& gpu, LiveScen
     CAUSTICS_CHECK(grow(s.tables.materials, s.materialBytes, p.materials.size(), "live materials"));
     CAUSTICS_CHECK(grow(s.tables.instances, s.instanceBytes, p.instances.size(), "live instances"));
     CAUSTICS_CHECK(grow(s.tables.lights, s.lightBytes, p.lights.size(), "live lights"));
-    if (!s.tables.tlas || s.tlasCapacity < p.instanceCount) {
+    if (ownTlas && (!s.tables.tlas || s.tlasCapacity < p.instanceCount)) {
         rhi::AccelStructDesc td;
         td.isTopLevel = true;
         td.maxInstances = std::max(p.instanceCount, 2 * s.tlasCapacity);
@@ -147,9 +151,10 @@ Result<LiveSceneFrame> LiveScene::addUpdatePass(rg::RenderGraph& graph, const sc
     if (slot >= slots_.size()) return makeError("LiveScene: frame slot " + std::to_string(slot) + " out of range");
     if (host.tlas && !host.tlas->desc().isTopLevel)
         return makeError("HostSceneTables::tlas '" + host.tlas->desc().debugName + "' is not a top-level acceleration structure");
-    CAUSTICS_TRY(auto packed, packFrame(scene, *gpuScene_));
+    const bool buildTlas = !host.tlas;
+    CAUSTICS_TRY(auto packed, packFrame(scene, *gpuScene_, buildTlas));
     std::shared_ptr<Slot> s = slots_[slot];
-    CAUSTICS_CHECK(ensureCapacity(*device_, *gpuScene_, *s, packed));
+    CAUSTICS_CHECK(ensureCapacity(*device_, *gpuScene_, *s, packed, buildTlas));
     const SceneTables tables = effectiveTables(s->tables, host);
     if (!s->bindings.set || !(tables == s->bound)) {
         s->bindings.layout = layout_;
@@ -162,7 +167,6 @@ Result<LiveSceneFrame> LiveScene::addUpdatePass(rg::RenderGraph& graph, const sc
 
     LiveSceneFrame frame;
     frame.bindings = &s->bindings;
-    const bool buildTlas = !host.tlas;
     // Our TLAS is left readable: the graph orders this frame's build after earlier frames' traces and
     // before this frame's (every tracing pass declares the read). The host's is imported as it says.
     frame.tlas = buildTlas ? graph.importAccelStruct("scene.tlas", s->tables.tlas, rhi::ResourceState::AccelStructRead,

@@ -41,11 +41,26 @@ ResourceDecl importDecl(ResourceKind kind, std::string name, rhi::ResourceState 
     decl.finalState = final;
     return decl;
 }
+
+// An object imported earlier in this graph (several views in one graph share the module's persistent
+// objects): the same resource at its latest version, so the graph orders and barriers every use of it;
+// the new final state wins. kInvalidIndex when the object is new to this graph.
+template <typename Handle>
+uint32_t findImport(const std::vector<Handle>& imported, const Handle& object) {
+    if (!object) return kInvalidIndex;
+    for (uint32_t i = 0; i < imported.size(); ++i)
+        if (imported[i] == object) return i;
+    return kInvalidIndex;
+}
 }  // namespace
 
 RgTexture RenderGraph::importTexture(std::string name, rhi::TextureHandle texture, rhi::ResourceState current,
                                      rhi::ResourceState final) {
     if (!texture) setupError("render graph: importTexture('" + name + "') got a null texture");
+    if (uint32_t seen = findImport(imported_.textures, texture); seen != kInvalidIndex) {
+        desc_.resources[seen].finalState = final;
+        return {seen, desc_.resources[seen].latestVersion};
+    }
     uint32_t index = addResource(importDecl(ResourceKind::Texture, std::move(name), current, final));
     if (texture) desc_.resources[index].textureDesc = texture->desc();
     imported_.textures[index] = std::move(texture);
@@ -55,6 +70,10 @@ RgTexture RenderGraph::importTexture(std::string name, rhi::TextureHandle textur
 RgBuffer RenderGraph::importBuffer(std::string name, rhi::BufferHandle buffer, rhi::ResourceState current,
                                    rhi::ResourceState final) {
     if (!buffer) setupError("render graph: importBuffer('" + name + "') got a null buffer");
+    if (uint32_t seen = findImport(imported_.buffers, buffer); seen != kInvalidIndex) {
+        desc_.resources[seen].finalState = final;
+        return {seen, desc_.resources[seen].latestVersion};
+    }
     uint32_t index = addResource(importDecl(ResourceKind::Buffer, std::move(name), current, final));
     if (buffer) desc_.resources[index].bufferDesc = buffer->desc();
     imported_.buffers[index] = std::move(buffer);
@@ -64,6 +83,10 @@ RgBuffer RenderGraph::importBuffer(std::string name, rhi::BufferHandle buffer, r
 RgAccelStruct RenderGraph::importAccelStruct(std::string name, rhi::AccelStructHandle as, rhi::ResourceState current,
                                              rhi::ResourceState final) {
     if (!as) setupError("render graph: importAccelStruct('" + name + "') got a null acceleration structure");
+    if (uint32_t seen = findImport(imported_.accelStructs, as); seen != kInvalidIndex) {
+        desc_.resources[seen].finalState = final;
+        return {seen, desc_.resources[seen].latestVersion};
+    }
     uint32_t index = addResource(importDecl(ResourceKind::AccelStruct, std::move(name), current, final));
     imported_.accelStructs[index] = std::move(as);
     return {index, 0};

@@ -43,11 +43,17 @@ protected:
     }
 };
 
-TEST_F(HostGBufferRefusal, ObjectIdOfTheWrongFormatIsNamedWithBothFormats) {
+// Linear depth and object ids as given: the only channels a caustics-only, unfiltered first-type run reads.
+HostGBuffer depthAndIds(rhi::TextureHandle linearDepth, rhi::TextureHandle objectId) {
     HostGBuffer g;
-    g.linearDepth = texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host depth");
-    g.objectId = texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host ids");
-    Status st = addWith(g);
+    g.linearDepth = std::move(linearDepth);
+    g.objectId = std::move(objectId);
+    return g;
+}
+
+TEST_F(HostGBufferRefusal, ObjectIdOfTheWrongFormatIsNamedWithBothFormats) {
+    Status st = addWith(depthAndIds(texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host depth"),
+                                    texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host ids")));
     ASSERT_FALSE(st);
     EXPECT_NE(st.message().find("hostGBuffer.objectId"), std::string::npos) << st.message();
     EXPECT_NE(st.message().find("'host ids'"), std::string::npos) << st.message();
@@ -55,28 +61,23 @@ TEST_F(HostGBufferRefusal, ObjectIdOfTheWrongFormatIsNamedWithBothFormats) {
 }
 
 TEST_F(HostGBufferRefusal, LinearDepthWithoutSampledUsageIsNamed) {
-    HostGBuffer g;
-    g.linearDepth = texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Storage, "host depth");
-    g.objectId = texture(rhi::Format::R32_UINT, rhi::TextureUsage::Sampled, "host ids");
-    Status st = addWith(g);
+    Status st = addWith(depthAndIds(texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Storage, "host depth"),
+                                    texture(rhi::Format::R32_UINT, rhi::TextureUsage::Sampled, "host ids")));
     ASSERT_FALSE(st);
     EXPECT_NE(st.message().find("hostGBuffer.linearDepth"), std::string::npos) << st.message();
     EXPECT_NE(st.message().find("Sampled usage"), std::string::npos) << st.message();
 }
 
 TEST_F(HostGBufferRefusal, MissingRequiredChannelIsNamed) {
-    HostGBuffer g;
-    g.linearDepth = texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host depth");
-    Status st = addWith(g);
+    Status st = addWith(depthAndIds(texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host depth"), nullptr));
     ASSERT_FALSE(st);
     EXPECT_NE(st.message().find("hostGBuffer.objectId is missing"), std::string::npos) << st.message();
 }
 
 TEST_F(HostGBufferRefusal, DepthTextureIsNotRequired) {
-    HostGBuffer g;   // no depth: the module never reads it
-    g.linearDepth = texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host depth");
-    g.objectId = texture(rhi::Format::R32_UINT, rhi::TextureUsage::Sampled, "host ids");
-    Status st = addWith(g);
+    // No depth texture: the module never reads it.
+    Status st = addWith(depthAndIds(texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host depth"),
+                                    texture(rhi::Format::R32_UINT, rhi::TextureUsage::Sampled, "host ids")));
     EXPECT_TRUE(st) << st.message();
 }
 

@@ -9,6 +9,15 @@ namespace caustics::test {
 
 float luminance(const glm::vec3& v) { return 0.2126f * v.x + 0.7152f * v.y + 0.0722f * v.z; }
 
+ViewRequest viewOf(const scene::Camera& camera, uint32_t size, ModuleOutput output, CausticsView* view) {
+    ViewRequest v;
+    v.inputs.camera = cameraViewMatrices(camera, size, size);
+    v.inputs.width = v.inputs.height = size;
+    v.inputs.view = view;
+    v.output = output;
+    return v;
+}
+
 Result<std::vector<std::vector<FrameImage>>> runModuleFrames(
     rhi::IDevice& device, CausticsModule& module, uint32_t frames, uint32_t framesInFlight,
     const std::function<std::vector<ViewRequest>(uint32_t frame)>& frameViews) {

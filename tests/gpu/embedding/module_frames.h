@@ -26,6 +26,10 @@ struct ViewRequest {
     ModuleOutput output = ModuleOutput::Caustics;
 };
 
+// A square view of `camera` with a standard projection.
+ViewRequest viewOf(const scene::Camera& camera, uint32_t size, ModuleOutput output = ModuleOutput::Caustics,
+                   CausticsView* view = nullptr);
+
 // Calls `frameViews(n)` for n = 0..frames-1 (it may change the module's scene first) and adds every
 // returned view to frame n's graph; returns images[n][view]. framesInFlight graphs rotate.
 Result<std::vector<std::vector<FrameImage>>> runModuleFrames(

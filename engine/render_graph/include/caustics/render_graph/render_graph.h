@@ -40,6 +40,8 @@ public:
     // Setup. addPass runs `setup` immediately; it returns the callback that records the pass.
     uint32_t addPass(std::string name, const PassSetupFn& setup);
     // Imported resources: the host's object, the state it is in now and the state to leave it in.
+    // Importing an object again in the same graph returns the same resource at its latest version
+    // (`current` is then ignored: the graph knows the state; the later `final` wins).
     RgTexture importTexture(std::string name, rhi::TextureHandle texture, rhi::ResourceState current,
                             rhi::ResourceState final);
     RgBuffer importBuffer(std::string name, rhi::BufferHandle buffer, rhi::ResourceState current,
