@@ -44,10 +44,10 @@ constexpr uint32_t kFrames = 4;
 
 // Measured (lavapipe 2026-11-30, "[ measured ]" lines): the same view rendered twice alone differs by
 // 0 (lavapipe happened to add the atomics in the same order), the main view rendered next to the side
-// view differs from it alone by 0, and the side view's image differs from the main one by 0.49. With
-// one history shared by both views (checked by passing the default view for both) the main view's
-// result moved by SHARED_MEASURED below. Bound 1e-6, about 8 float32 epsilons: atomic adds may be
-// ordered differently on other drivers.
+// view differs from it alone by 0, and the side view's image differs from the main one by 0.49. Were
+// the history shared, the main view's temporal pass would blend (1 - temporalAlpha) = 80 % of the side
+// view's last frame wherever its reprojection test passes, moving the result by a large fraction of
+// 0.49. Bound 1e-6, about 8 float32 epsilons: atomic adds may be ordered differently on other drivers.
 constexpr double kViewBound = 1e-6;
 
 TEST_F(Views, TwoViewsInOneFrameKeepIndependentHistories) {
