@@ -26,7 +26,7 @@ Result<std::unique_ptr<BenchFrames>> BenchFrames::create(rhi::DeviceHandle devic
 Status BenchFrames::render(const scene::Camera& camera, uint32_t frameIndex, bool readCaustics) {
     graph_.reset();
     FrameInputs in;
-    in.camera = camera;
+    in.camera = cameraViewMatrices(camera, width_, height_);
     in.width = width_;
     in.height = height_;
     in.frameIndex = frameIndex;
