@@ -43,8 +43,8 @@ ViewRequest request(const scene::Camera& cam, CausticsView* view) { return viewO
 constexpr uint32_t kFrames = 4;
 
 // Measured (lavapipe 2026-11-30, "[ measured ]" lines): the same view rendered twice alone differs by
-// 0 (lavapipe happened to add the atomics in the same order), the main view rendered next to the side
-// view differs from it alone by 0, and the side view's image differs from the main one by 0.49. Were
+// 0 to 3.7e-9 (the order of atomic adds), the main view rendered next to the side view differs from it
+// alone by 0 to 4.1e-8, and the side view's image differs from the main one by 0.49. Were
 // the history shared, the main view's temporal pass would blend (1 - temporalAlpha) = 80 % of the side
 // view's last frame wherever its reprojection test passes, moving the result by a large fraction of
 // 0.49. Bound 1e-6, about 8 float32 epsilons: atomic adds may be ordered differently on other drivers.
@@ -105,8 +105,8 @@ TEST_F(Views, GraphBuiltButNotExecutedLeavesTheHistoryAlone) {
 }
 
 // Measured (lavapipe 2026-11-30): 5 in flight vs 1 in flight over 8 frames of a moving scene, worst
-// frame 3.96e-8 (float-atomic summation order); first vs last frame of the run 1.21. Bound 1e-6, about
-// 8 float32 epsilons (25x the measurement); a frame reading another frame's tables, camera or history
+// frame 1.7e-8 to 1.4e-7 over three runs (float-atomic summation order); first vs last frame of the run
+// 1.21. Bound 1e-6, about 8 float32 epsilons (7x the largest measurement); a frame reading another frame's tables, camera or history
 // differs by a large fraction of the frame-to-frame change.
 constexpr double kInFlightBound = 1e-6;
 
