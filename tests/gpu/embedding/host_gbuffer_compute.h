@@ -19,7 +19,9 @@ public:
     static constexpr std::array<VkFormat, kChannelCount> kFormats = {
         VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R16G16B16A16_SFLOAT,
         VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32_UINT};
-    static constexpr VkImageUsageFlags kUsage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    // TRANSFER_SRC: the test reads objectId and linearDepth back to compare them with the module's pass.
+    static constexpr VkImageUsageFlags kUsage =
+        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
 
     // Uploads the scene's triangles in world space and its instances' materials; false on failure.
     bool create(RawVulkanHost& host, const scene::Scene& scene, uint32_t width, uint32_t height);
