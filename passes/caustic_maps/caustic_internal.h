@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "caustic_filter/caustic_filter.h"
 #include "caustics/caustic_passes.h"
 
 namespace caustics {
@@ -12,7 +13,6 @@ struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
     bool floatAtomics = true;
     rhi::BindingLayoutHandle mapLayout, emitterLayout, forwardLayout, backwardLayout, gatherLayout;
-    rhi::BindingLayoutHandle resolveLayout, temporalLayout, atrousLayout, historyLayout;
     // Built against a scene binding layout (recreated when the scene's layout changes).
     const rhi::IBindingLayout* sceneLayoutSeen = nullptr;
     rhi::GraphicsPipelineHandle mapPipeline;
@@ -21,14 +21,12 @@ struct CausticResources::Impl {
     rhi::ComputePipelineHandle gridFromCount;     // caustic_grid_pass.cpp
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
-    rhi::ComputePipelineHandle resolve, temporal, atrous, history;
+    CausticFilterPipelines filter;   // resolve + filter (caustic_filter/)
     rhi::BufferHandle sphereAabb;
     rhi::AccelStructHandle sphereBlas;
     rhi::AccelStructHandle sphereTlas;
     uint32_t tlasCapacity = 0;
-    rhi::TextureHandle historyColor, historyDepth, historyNormal, historyObjectId;
-    uint32_t historyWidth = 0, historyHeight = 0;
-    bool historyValid = false;
+    CausticFilterHistory filterHistory;   // the view's filter history
     // Binding sets made while recording must outlive the GPU's use: kept for three frames.
     std::array<std::vector<rhi::BindingSetHandle>, 3> frameSets;
     uint32_t frameSlot = 0;
@@ -50,6 +48,7 @@ struct CausticFrame {
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereTlas;
     CausticMapPlan plan;
+    CausticFilterHistory* filterHistory = nullptr;   // this view's (persists across frames)
 };
 
 void addSetupPass(rg::RenderGraph& graph, CausticFrame& f);

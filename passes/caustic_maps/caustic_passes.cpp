@@ -83,6 +83,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     f.width = in.gbuffer.width;
     f.height = in.gbuffer.height;
     f.plan = std::move(plan);
+    f.filterHistory = &res->filterHistory;
 
     CausticOutputs out;
     out.floatAtomics = res->floatAtomics;
