@@ -2,7 +2,11 @@
 // renderer: a glass ball's focal spot and the metal ring's cardioid close-up, 128x128, fixed seeds.
 // Every comparison uses luminance: relative L1 = sum |l - l_ref| / sum l_ref over the image, the 3x3
 // peak = 3x3 mean at the reference's brightest 3x3 location, energy = sum of l.
-// Set CAUSTICS_FILTER_IMAGES=<folder> to get the images as PGM files.
+// Set CAUSTICS_FILTER_IMAGES=<folder> to get the images as PGM (and raw float luminance) files.
+// Bounds are the task's (issue 10); the measured values are printed as "[ measured ]" lines. Noise they sit
+// on (lavapipe, 2026-11-30): the reference itself, seed 2000 vs seed 1000, differs by L1 0.074 (ball) and
+// 0.087 (ring) with peak and energy within 0.6 %; the 1-ray frame's energy is within 0.4 % of the reference
+// for these seeds, so the 3 % energy bound measures the filter, not the sampling.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -139,6 +143,9 @@ TEST_F(CausticFilter, OneFrameAtOneRayBeatsFourRaysUnfilteredAndKeepsThePeakAndE
         EXPECT_LT(f.l1, u4.l1);
         EXPECT_NEAR(f.peak, 1.0, 0.2);
         EXPECT_NEAR(f.energy, 1.0, 0.03);
+        // The a-trous passes hand out each pixel's radiance exactly (source normalisation): the filtered
+        // frame has the unfiltered frame's energy up to float rounding (measured equal to 4 digits).
+        EXPECT_NEAR(f.energy / u1.energy, 1.0, 1e-3);
     }
 }
 
