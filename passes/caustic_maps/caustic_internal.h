@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "caustic_filter/caustic_filter.h"
 #include "caustics/caustic_passes.h"
 
 namespace caustics {
@@ -17,7 +18,6 @@ struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
     bool floatAtomics = true;
     rhi::BindingLayoutHandle mapLayout, emitterLayout, forwardLayout, backwardLayout, gatherLayout;
-    rhi::BindingLayoutHandle resolveLayout, temporalLayout, atrousLayout, historyLayout;
     // Built against a scene binding layout (recreated when the scene's layout changes).
     const rhi::IBindingLayout* sceneLayoutSeen = nullptr;
     rhi::GraphicsPipelineHandle mapPipeline;
@@ -26,7 +26,7 @@ struct CausticResources::Impl {
     rhi::ComputePipelineHandle gridFromCount;     // caustic_grid_pass.cpp
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
-    rhi::ComputePipelineHandle resolve, temporal, atrous, history;
+    CausticFilterPipelines filter;   // resolve + filter (caustic_filter/)
     rhi::BufferHandle sphereAabb;
     rhi::AccelStructHandle sphereBlas;
     rhi::AccelStructHandle sphereTlas;

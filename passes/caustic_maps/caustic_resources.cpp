@@ -13,14 +13,6 @@ namespace {
 using rhi::BindingType;
 using rhi::ShaderStage;
 
-Result<rhi::BindingLayoutHandle> layout(rhi::IDevice& d, std::initializer_list<std::pair<uint32_t, BindingType>> items) {
-    rhi::BindingLayoutDesc desc;
-    desc.setVisibility(ShaderStage::All);
-    for (auto [slot, type] : items) desc.add(slot, type);
-    return d.createBindingLayout(desc);
-}
-
-
 Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path,
                                            std::vector<rhi::BindingLayoutHandle> layouts, uint32_t push) {
     rhi::ComputePipelineDesc desc;
@@ -54,6 +46,18 @@ Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, 
 
 }  // namespace
 
+Result<rhi::BindingLayoutHandle> makeBindingLayout(rhi::IDevice& d, std::initializer_list<std::pair<uint32_t, BindingType>> items) {
+    rhi::BindingLayoutDesc desc;
+    desc.setVisibility(ShaderStage::All);
+    for (auto [slot, type] : items) desc.add(slot, type);
+    return d.createBindingLayout(desc);
+}
+
+Result<rhi::ComputePipelineHandle> makeComputePipeline(rhi::IDevice& d, const char* path, const rhi::BindingLayoutHandle& l,
+                                                       uint32_t push) {
+    return compute(d, path, {l}, push);
+}
+
 CausticResources::CausticResources() = default;
 CausticResources::~CausticResources() = default;
 CausticResources::CausticResources(CausticResources&&) noexcept = default;
@@ -68,22 +72,15 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     m.frameSets.resize(framesInFlight);
     m.floatAtomics = d.capabilities().shaderFloatAtomicAdd;
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
-               TX = BindingType::SampledTexture, IM = BindingType::StorageTexture, AS = BindingType::AccelStruct;
-    CAUSTICS_TRY(m.mapLayout, layout(d, {{0, RO}}));
-    CAUSTICS_TRY(m.emitterLayout, layout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
-    CAUSTICS_TRY(m.forwardLayout, layout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW}}));
-    CAUSTICS_TRY(m.backwardLayout, layout(d, {{0, CB}, {1, TX}, {2, TX}, {3, RW}, {4, RW}, {5, RW}}));
-    CAUSTICS_TRY(m.gatherLayout, layout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
-    CAUSTICS_TRY(m.resolveLayout, layout(d, {{0, RO}, {1, RO}, {2, IM}, {3, IM}, {4, IM}}));
-    CAUSTICS_TRY(m.temporalLayout, layout(d, {{0, CB}, {1, TX}, {2, TX}, {3, TX}, {4, TX}, {5, TX}, {6, TX}, {7, TX}, {8, TX}, {9, IM}}));
-    CAUSTICS_TRY(m.atrousLayout, layout(d, {{0, TX}, {1, TX}, {2, TX}, {3, TX}, {4, IM}}));
-    CAUSTICS_TRY(m.historyLayout, layout(d, {{0, TX}, {1, TX}, {2, TX}, {3, TX}, {4, IM}, {5, IM}, {6, IM}, {7, IM}}));
-    CAUSTICS_TRY(m.gridLayout, layout(d, {{0, RO}, {1, RW}}));
+               TX = BindingType::SampledTexture, AS = BindingType::AccelStruct;
+    CAUSTICS_TRY(m.mapLayout, makeBindingLayout(d, {{0, RO}}));
+    CAUSTICS_TRY(m.emitterLayout, makeBindingLayout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
+    CAUSTICS_TRY(m.forwardLayout, makeBindingLayout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW}}));
+    CAUSTICS_TRY(m.backwardLayout, makeBindingLayout(d, {{0, CB}, {1, TX}, {2, TX}, {3, RW}, {4, RW}, {5, RW}}));
+    CAUSTICS_TRY(m.gatherLayout, makeBindingLayout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
+    CAUSTICS_TRY(m.gridLayout, makeBindingLayout(d, {{0, RO}, {1, RW}}));
     CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout}, 8));
-    CAUSTICS_TRY(m.resolve, compute(d, "caustic_filter/resolve.comp", {m.resolveLayout}, 16));
-    CAUSTICS_TRY(m.temporal, compute(d, "caustic_filter/temporal.comp", {m.temporalLayout}, 8));
-    CAUSTICS_TRY(m.atrous, compute(d, "caustic_filter/atrous.comp", {m.atrousLayout}, 16));
-    CAUSTICS_TRY(m.history, compute(d, "caustic_filter/history.comp", {m.historyLayout}, 8));
+    CAUSTICS_TRY(m.filter, CausticFilterPipelines::create(d));
 
     // Gather: sphere.rint + gather.rahit over the sphere TLAS (procedural hit group).
     rhi::StateObjectDesc g;
@@ -169,6 +166,7 @@ Status CausticResources::Impl::ensureHistory(CausticViewHistory& h, uint32_t wid
                                          .setDebugName(name));
     };
     CAUSTICS_TRY(h.color, make(rhi::Format::RGBA32_FLOAT, "caustics.historyColor"));
+    CAUSTICS_TRY(h.moments, make(rhi::Format::RGBA32_FLOAT, "caustics.historyMoments"));
     CAUSTICS_TRY(h.depth, make(rhi::Format::R32_FLOAT, "caustics.historyDepth"));
     CAUSTICS_TRY(h.normal, make(rhi::Format::RGBA16_FLOAT, "caustics.historyNormal"));
     CAUSTICS_TRY(h.objectId, make(rhi::Format::R32_UINT, "caustics.historyObjectId"));

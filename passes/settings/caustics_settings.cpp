@@ -35,9 +35,12 @@ Status CausticsSettings::validate() const {
         return outOfRange("sphereMinRadius", sphereMinRadius, 1e-6f, 1e3f);
     if (!std::isfinite(sphereMaxRadius) || sphereMaxRadius < sphereMinRadius || sphereMaxRadius > 1e3f)
         return outOfRange("sphereMaxRadius", sphereMaxRadius, sphereMinRadius, 1e3f);
-    if (!std::isfinite(temporalAlpha) || temporalAlpha <= 0.0f || temporalAlpha > 1.0f)
-        return outOfRange("temporalAlpha", temporalAlpha, 1e-6f, 1.0f);
-    if (atrousIterations > 8) return outOfRange("atrousIterations", atrousIterations, 0u, 8u);
+    if (filterMaxHistory < 1 || filterMaxHistory > kMaxFilterHistory)
+        return outOfRange("filterMaxHistory", filterMaxHistory, 1u, kMaxFilterHistory);
+    if (atrousIterations > kMaxAtrousIterations)
+        return outOfRange("atrousIterations", atrousIterations, 0u, kMaxAtrousIterations);
+    if (!std::isfinite(filterLuminanceSigma) || filterLuminanceSigma <= 0.0f || filterLuminanceSigma > kMaxFilterLuminanceSigma)
+        return outOfRange("filterLuminanceSigma", filterLuminanceSigma, 1e-6f, kMaxFilterLuminanceSigma);
     if (!std::isfinite(exposure) || exposure <= 0.0f) return makeError("CausticsSettings::exposure must be > 0");
     if (framesInFlight < 1 || framesInFlight > kMaxFramesInFlight)
         return outOfRange("framesInFlight", framesInFlight, 1u, kMaxFramesInFlight);

@@ -95,9 +95,13 @@ void settingsSection(ViewerState& s) {
         c.maxStoredHits = uint32_t(hits), changed = true;
     changed |= ImGui::Checkbox("filter", &c.filter);
     if (c.filter) {
-        changed |= ImGui::SliderFloat("temporal alpha", &c.temporalAlpha, 0.01f, 1.0f, "%.2f");
+        int history = int(c.filterMaxHistory);
+        if (ImGui::SliderInt("max history (frames)", &history, 1, 256, "%d", ImGuiSliderFlags_Logarithmic))
+            c.filterMaxHistory = uint32_t(history), changed = true;
         int iterations = int(c.atrousIterations);
-        if (ImGui::SliderInt("a-trous iterations", &iterations, 0, 5)) c.atrousIterations = uint32_t(iterations), changed = true;
+        if (ImGui::SliderInt("a-trous iterations", &iterations, 0, int(CausticsSettings::kMaxAtrousIterations)))
+            c.atrousIterations = uint32_t(iterations), changed = true;
+        changed |= ImGui::SliderFloat("luminance sigma", &c.filterLuminanceSigma, 0.25f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     }
     changed |= ImGui::SliderFloat("exposure", &c.exposure, 1e-3f, 1e3f, "%.3f", ImGuiSliderFlags_Logarithmic);
     int seed = int(c.seed);

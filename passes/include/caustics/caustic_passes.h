@@ -77,10 +77,15 @@ struct CausticSphere {
 };
 static_assert(sizeof(CausticSphere) == 64);
 
-// The filter history of one view (paper 3.4): last frame's filtered radiance and the G-buffer it was
-// made with. Each view (camera, split-screen half, reflection probe) owns one; sized on first use.
+// The filter history of one view (paper 3.4, docs/caustics.md "Filter"): last frame's temporal
+// accumulation (before the spatial passes), its luminance moments and history length, and the G-buffer
+// it was made with. Each view (camera, split-screen half, reflection probe) owns one; sized on first use.
 struct CausticViewHistory {
-    rhi::TextureHandle color, depth, normal, objectId;
+    rhi::TextureHandle color;     // RGBA32F accumulated radiance
+    rhi::TextureHandle moments;   // RGBA32F x E[l], y E[l^2] of luminance, z history length n (sample count)
+    rhi::TextureHandle depth;     // R32F linear depth
+    rhi::TextureHandle normal;    // RGBA16F
+    rhi::TextureHandle objectId;  // R32UI
     uint32_t width = 0, height = 0;
     // True once a frame's caustics.history pass has been RECORDED (graph execution), so a graph that is
     // built and never executed does not make the history look valid.

@@ -46,9 +46,16 @@ struct CausticsSettings {
     float sphereMinRadius = 1.0e-4f;
     float sphereMaxRadius = 0.25f;
     uint32_t maxStoredHits = 1u << 20;  // forward diffuse hits kept for the second-type gather
-    bool filter = true;                 // temporal + a-trous spatial filter (the paper measured with it off)
-    float temporalAlpha = 0.1f;         // weight of the new frame in the temporal accumulation
-    uint32_t atrousIterations = 3;
+    // The caustic filter (docs/caustics.md "Filter"; SVGF-like, the paper measured with it off).
+    bool filter = true;
+    // History length cap, frames: with a still view the temporal step is the plain mean of the last
+    // frames until this many, then an exponential average with weight 1 / filterMaxHistory.
+    uint32_t filterMaxHistory = 32;
+    // Edge-aware a-trous iterations (steps 1, 2, 4, ...; 5 spans 125 pixels); 0 = temporal only.
+    uint32_t atrousIterations = 5;
+    // Luminance edge-stopping: neighbours whose luminance differs by more than about this many standard
+    // deviations of the estimated noise get (almost) no weight. Smaller keeps more detail and more noise.
+    float filterLuminanceSigma = 1.5f;
     float exposure = 1.0f;
     uint32_t seed = 1;
     // Added by the module helper: which image CausticsModule's `display` output shows (FirstType and
@@ -69,6 +76,9 @@ struct CausticsSettings {
     static constexpr uint32_t kMaxSpecularDepth = 31;
     static constexpr uint32_t kMaxStoredHits = 1u << 26;
     static constexpr uint32_t kMaxFramesInFlight = 16;
+    static constexpr uint32_t kMaxFilterHistory = 1024;
+    static constexpr uint32_t kMaxAtrousIterations = 8;
+    static constexpr float kMaxFilterLuminanceSigma = 1000.0f;
 
     Status validate() const;
 };

@@ -1,21 +1,25 @@
-// Stores this frame's temporal result and G-buffer guides for the next frame's reprojection
+// Keeps this frame's temporal accumulation (unfiltered, so the history stays an unbiased average), its
+// luminance moments and history length, and the G-buffer guides of the next frame's disocclusion test
 // (mirror of shaders/vulkan/caustic_filter/history.comp).
 Texture2D<float4> temporalColor : register(t0, space0);
-Texture2D<float4> gLinearDepth : register(t1, space0);
-Texture2D<float4> gNormal : register(t2, space0);
-Texture2D<uint> gObjectId : register(t3, space0);
-RWTexture2D<float4> historyColor : register(u4, space0);
-RWTexture2D<float> historyDepth : register(u5, space0);
-RWTexture2D<float4> historyNormal : register(u6, space0);
-RWTexture2D<uint> historyObjectId : register(u7, space0);
+Texture2D<float4> temporalMoments : register(t1, space0);
+Texture2D<float4> gLinearDepth : register(t2, space0);
+Texture2D<float4> gNormal : register(t3, space0);
+Texture2D<uint> gObjectId : register(t4, space0);
+RWTexture2D<float4> historyColor : register(u5, space0);
+RWTexture2D<float4> historyMoments : register(u6, space0);
+RWTexture2D<float> historyDepth : register(u7, space0);
+RWTexture2D<float4> historyNormal : register(u8, space0);
+RWTexture2D<uint> historyObjectId : register(u9, space0);
 struct Push { int width; int height; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
 [numthreads(8, 8, 1)]
-void main(uint3 id : SV_DispatchThreadID) {
-    int2 p = int2(id.xy);
+void main(uint3 tid : SV_DispatchThreadID) {
+    int2 p = int2(tid.xy);
     if (p.x >= pc.width || p.y >= pc.height) return;
     historyColor[p] = temporalColor.Load(int3(p, 0));
+    historyMoments[p] = temporalMoments.Load(int3(p, 0));
     historyDepth[p] = gLinearDepth.Load(int3(p, 0)).r;
     historyNormal[p] = gNormal.Load(int3(p, 0));
     historyObjectId[p] = gObjectId.Load(int3(p, 0));

@@ -1,37 +1,206 @@
-// The filter of paper 3.4 (temporal reprojection + edge-aware a-trous): runs clean under validation
-// over several frames and keeps the caustic's mean radiance (the kernels are normalised).
+// The caustic filter (docs/caustics.md "Filter"; SVGF-like) against converged renders of the same
+// renderer: a glass ball's focal spot and the metal ring's cardioid close-up, 128x128, fixed seeds.
+// Every comparison uses luminance: relative L1 = sum |l - l_ref| / sum l_ref over the image, the 3x3
+// peak = 3x3 mean at the reference's brightest 3x3 location, energy = sum of l.
+// Set CAUSTICS_FILTER_IMAGES=<folder> to get the images as PGM (and raw float luminance) files.
+// Bounds are the task's (issue 10); the measured values are printed as "[ measured ]" lines. Noise they sit
+// on (lavapipe, 2026-11-30): the reference itself, seed 2000 vs seed 1000, differs by L1 0.074 (ball) and
+// 0.087 (ring) with peak and energy within 0.6 %; the 1-ray frame's energy is within 0.4 % of the reference
+// for these seeds, so the 3 % energy bound measures the filter, not the sampling.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <map>
+#include <string>
 
 #include "caustic_harness.h"
-#include "caustic_test_scene.h"
+#include "filter_image_metrics.h"
 #include "gpu_test.h"
+#include "caustics/scene/builtin_scenes.h"
 
 namespace caustics::test {
 namespace {
 
-class CausticFilter : public GpuTest {};
-constexpr uint32_t kFrames = 3;
+constexpr uint32_t kSize = 96;
 
-TEST_F(CausticFilter, FilteredRadianceKeepsTheMeanOfTheUnfilteredCaustics) {
-    CausticsSettings s = smallSettings();
+struct FilterScene {
+    std::string name;
+    scene::Scene scene;
+    scene::Camera camera;
+    scene::Camera panned;      // the camera turned by about 5 degrees (pan test)
+    CausticsSettings settings; // 1 ray per texel, filter on with its defaults
+    // The converged image: one frame at this many rays per texel, filter off (2.4 M rays).
+    float referenceRays = 0.0f;
+};
+
+CausticsSettings baseSettings(uint32_t mapResolution) {
+    CausticsSettings s;
+    s.mapResolution = mapResolution;
+    s.raysPerTexel = 1.0f;
+    s.secondType = false;      // the filter sees first + second type alike; the first type is cheaper to converge
+    s.maxStoredHits = 1u << 10;
     s.filter = true;
-    s.raysPerTexel = 4.0f;
-    auto run = runCaustics(*device, smallGlassSphereScene(), obliqueCamera(), 64, 64, s, kFrames);
-    ASSERT_TRUE(run) << run.message();
-    const CausticRun& r = run.value();
-    double filtered = 0.0, raw = 0.0;
-    for (size_t i = 0; i < r.radiance.size(); ++i) {
-        ASSERT_TRUE(std::isfinite(r.radiance[i].x) && std::isfinite(r.radiance[i].y) && std::isfinite(r.radiance[i].z));
-        filtered += r.radiance[i].y;
-        raw += r.firstType[i].y + r.secondType[i].y;
+    return s;
+}
+
+// Glass ball (n = 1.5, R = 0.5) under a sun 31 degrees off vertical, placed so that its paraxial focus
+// f = nR / (2(n - 1)) = 0.75 from the centre along the light lies on the floor, beside the ball.
+FilterScene glassBallFocalSpot() {
+    scene::AnalyticSceneDesc d;
+    d.radius = 0.5f;
+    d.tessellation = 96;
+    d.lightDirection = glm::normalize(glm::vec3(0.6f, -1.0f, 0.0f));
+    d.height = 0.75f * -d.lightDirection.y;
+    FilterScene s{"ball", scene::makeGlassSphereScene(d), {}, {}, baseSettings(96), 256.0f};
+    s.camera.eye = {1.6f, 1.0f, 1.2f};
+    s.camera.target = {0.35f, 0.0f, 0.0f};
+    s.camera.verticalFovRadians = glm::radians(30.0f);
+    s.panned = s.camera;
+    s.panned.target = {0.45f, 0.0f, -0.15f};
+    return s;
+}
+
+// Polished ring under light at 30 degrees elevation; the camera looks down at the cardioid inside.
+FilterScene ringCloseUp() {
+    FilterScene s{"ring", scene::makeMetalRingScene(), {}, {}, baseSettings(192), 64.0f};
+    s.camera.eye = {-0.1f, 1.1f, 0.5f};
+    s.camera.target = {-0.15f, 0.0f, 0.0f};
+    s.camera.verticalFovRadians = glm::radians(35.0f);
+    s.panned = s.camera;
+    s.panned.target = {-0.05f, 0.0f, -0.05f};
+    return s;
+}
+
+class CausticFilter : public GpuTest {
+protected:
+    // One frame, filter off (the unfiltered estimate), at `rays` per texel.
+    std::vector<glm::vec3> unfiltered(const FilterScene& s, const scene::Camera& camera, float rays, uint32_t seed) {
+        CausticsSettings settings = s.settings;
+        settings.filter = false;
+        settings.raysPerTexel = rays;
+        settings.seed = seed;
+        auto run = runCaustics(*device, s.scene, camera, kSize, kSize, settings);
+        EXPECT_TRUE(run) << run.message();
+        return run ? run.value().radiance : std::vector<glm::vec3>(size_t(kSize) * kSize);
     }
-    ASSERT_GT(raw, 0.0);
-    // Both are estimates of the same static image (the temporal history mixes earlier frames with
-    // other seeds); 15 % covers the frame-to-frame noise of a 64x64 map and the a-trous kernel's
-    // renormalisation at object borders.
-    EXPECT_NEAR(filtered / raw, 1.0, 0.15);
+    // The converged image, computed once per scene and view for the whole test program.
+    const std::vector<glm::vec3>& reference(const FilterScene& s, const scene::Camera& camera, const char* view) {
+        static std::map<std::string, std::vector<glm::vec3>> cache;
+        const std::string key = s.name + "." + view;
+        auto it = cache.find(key);
+        if (it == cache.end()) it = cache.emplace(key, unfiltered(s, camera, s.referenceRays, 1000)).first;
+        return it->second;
+    }
+    // Frames with the filter on, one per camera; the last frame's filtered and unfiltered images.
+    struct Filtered {
+        std::vector<glm::vec3> filtered, unfiltered;
+    };
+    Filtered filtered(const FilterScene& s, std::span<const scene::Camera> cameras) {
+        auto run = runCaustics(*device, s.scene, cameras, kSize, kSize, s.settings);
+        EXPECT_TRUE(run) << run.message();
+        Filtered f{std::vector<glm::vec3>(size_t(kSize) * kSize), std::vector<glm::vec3>(size_t(kSize) * kSize)};
+        if (!run) return f;
+        f.filtered = run.value().radiance;
+        for (size_t i = 0; i < f.unfiltered.size(); ++i) f.unfiltered[i] = run.value().firstType[i] + run.value().secondType[i];
+        return f;
+    }
+};
+
+struct Comparison {
+    double l1 = 0.0, peak = 0.0, energy = 0.0;   // L1 relative to the reference's sum, ratios to the reference
+};
+
+Comparison compare(const std::vector<glm::vec3>& img, const std::vector<glm::vec3>& ref) {
+    PeakLocation p = brightest3x3(ref, kSize, kSize);
+    return {relativeL1(img, ref), mean3x3(img, kSize, kSize, p.x, p.y) / p.value, energy(img) / energy(ref)};
+}
+
+void print(const std::string& what, const Comparison& c) {
+    std::printf("[ measured ] %-34s L1 %.4f  peak %.4f  energy %.4f\n", what.c_str(), c.l1, c.peak, c.energy);
+}
+
+double white(const std::vector<glm::vec3>& ref) { return brightest3x3(ref, kSize, kSize).value; }
+
+// One frame at 1 ray per texel: the filter must beat 4x the rays without filtering (relative L1), keep
+// the focal spot / cusp (3x3 peak within 20 %) and the energy (within 3 %).
+TEST_F(CausticFilter, OneFrameAtOneRayBeatsFourRaysUnfilteredAndKeepsThePeakAndEnergy) {
+    for (const FilterScene& s : {glassBallFocalSpot()}) {
+        SCOPED_TRACE(s.name);
+        const std::vector<glm::vec3>& ref = reference(s, s.camera, "main");
+        const scene::Camera cams[] = {s.camera};
+        Filtered one = filtered(s, cams);
+        std::vector<glm::vec3> four = unfiltered(s, s.camera, 4.0f, 1);
+        Comparison f = compare(one.filtered, ref), u1 = compare(one.unfiltered, ref), u4 = compare(four, ref);
+        print(s.name + " 1 frame filtered", f);
+        print(s.name + " 1 frame unfiltered (1 ray)", u1);
+        print(s.name + " unfiltered 4 rays", u4);
+        print(s.name + " reference (seed 2) vs reference", compare(unfiltered(s, s.camera, s.referenceRays, 2000), ref));
+        dumpLuminance(s.name + "_reference", ref, kSize, kSize, white(ref));
+        dumpLuminance(s.name + "_1frame_filtered", one.filtered, kSize, kSize, white(ref));
+        dumpLuminance(s.name + "_1frame_unfiltered", one.unfiltered, kSize, kSize, white(ref));
+        EXPECT_LT(f.l1, u4.l1);
+        EXPECT_NEAR(f.peak, 1.0, 0.2);
+        EXPECT_NEAR(f.energy, 1.0, 0.03);
+        // The a-trous passes hand out each pixel's radiance exactly (source normalisation): the filtered
+        // frame has the unfiltered frame's energy up to float rounding (measured equal to 4 digits).
+        EXPECT_NEAR(f.energy / u1.energy, 1.0, 1e-3);
+    }
+}
+
+// A still camera for 32 frames (= the default history cap): the temporal average of 32 frames at 1 ray
+// per texel, spatially filtered, must beat 16 rays unfiltered and keep the peak within 10 %.
+TEST_F(CausticFilter, StillCameraConvergesToTheUnfilteredMean) {
+    for (const FilterScene& s : {glassBallFocalSpot(), ringCloseUp()}) {
+        SCOPED_TRACE(s.name);
+        const std::vector<glm::vec3>& ref = reference(s, s.camera, "main");
+        const std::vector<scene::Camera> cams(32, s.camera);
+        Filtered many = filtered(s, cams);
+        Comparison f = compare(many.filtered, ref), u16 = compare(unfiltered(s, s.camera, 16.0f, 1), ref);
+        print(s.name + " 32 frames filtered", f);
+        print(s.name + " unfiltered 16 rays", u16);
+        dumpLuminance(s.name + "_32frames_filtered", many.filtered, kSize, kSize, white(ref));
+        EXPECT_LT(f.l1, u16.l1);
+        EXPECT_NEAR(f.peak, 1.0, 0.1);
+        EXPECT_NEAR(f.energy, 1.0, 0.03);
+    }
+}
+
+// 8 frames at one view, then the camera turns by about 5 degrees: 4 frames later the error must be
+// within 1.5x that of 4 frames started fresh at the new view (a trail of the old view would not be).
+TEST_F(CausticFilter, CameraPanLeavesNoTrail) {
+    for (const FilterScene& s : {glassBallFocalSpot(), ringCloseUp()}) {
+        SCOPED_TRACE(s.name);
+        const std::vector<glm::vec3>& ref = reference(s, s.panned, "panned");
+        std::vector<scene::Camera> panned(8, s.camera);
+        panned.insert(panned.end(), 4, s.panned);
+        const std::vector<scene::Camera> fresh(4, s.panned);
+        const std::vector<glm::vec3> afterPan = filtered(s, panned).filtered, fromFresh = filtered(s, fresh).filtered;
+        Comparison p = compare(afterPan, ref), f = compare(fromFresh, ref);
+        dumpLuminance(s.name + "_panned_reference", ref, kSize, kSize, white(ref));
+        dumpLuminance(s.name + "_panned_after_pan", afterPan, kSize, kSize, white(ref));
+        dumpLuminance(s.name + "_panned_fresh", fromFresh, kSize, kSize, white(ref));
+        print(s.name + " 8 frames + pan + 4 frames", p);
+        print(s.name + " 4 frames fresh at the new view", f);
+        EXPECT_LT(p.l1, 1.5 * f.l1);
+    }
+}
+
+std::string errorOf(const Status& s) { return s ? std::string() : s.message(); }
+
+// Absurd filter settings are refused naming the field.
+TEST(CausticFilterSettings, AbsurdValuesAreRefusedNamingTheField) {
+    CausticsSettings s;
+    s.filterMaxHistory = 0;
+    EXPECT_NE(errorOf(s.validate()).find("filterMaxHistory"), std::string::npos);
+    s = {};
+    s.filterLuminanceSigma = std::nanf("");
+    EXPECT_NE(errorOf(s.validate()).find("filterLuminanceSigma"), std::string::npos);
+    s = {};
+    s.atrousIterations = CausticsSettings::kMaxAtrousIterations + 1;
+    EXPECT_NE(errorOf(s.validate()).find("atrousIterations"), std::string::npos);
+    EXPECT_TRUE(CausticsSettings{}.validate());
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "caustic_harness.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "caustics/frame_context.h"
@@ -34,6 +35,13 @@ std::vector<glm::vec3> rgb(const std::vector<glm::vec4>& v) {
 
 Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
                                uint32_t height, const CausticsSettings& settings, uint32_t frames) {
+    const std::vector<scene::Camera> cameras(std::max(frames, 1u), camera);
+    return runCaustics(device, scene, cameras, width, height, settings);
+}
+
+Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::span<const scene::Camera> cameras,
+                               uint32_t width, uint32_t height, const CausticsSettings& settings) {
+    const uint32_t frames = uint32_t(cameras.size());
     CAUSTICS_TRY(scene::GpuScene gpuScene, scene::GpuScene::create(device, scene));
     CAUSTICS_TRY(SceneBindings bindings, SceneBindings::create(device, gpuScene, scene));
     BindingLayoutDesc cl;
@@ -61,7 +69,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, const
         fc.gpuScene = &gpuScene;
         fc.sceneBindings = &bindings;
         fc.settings = &settings;
-        CAUSTICS_TRY(fc.camera, makeCameraConstants(camera, width, height, frame, frame ? &prevViewProj : nullptr));
+        CAUSTICS_TRY(fc.camera, makeCameraConstants(cameras[frame], width, height, frame, frame ? &prevViewProj : nullptr));
         prevViewProj = fc.camera.viewProj;
         std::memcpy(cameraBuffer->mappedData(), &fc.camera, sizeof(CameraConstants));
         fc.cameraBuffer = cameraBuffer;

@@ -2,6 +2,7 @@
 // Runs one or more frames of the G-buffer pass and the caustic passes (caustic_passes.h) for a scene
 // and reads the results back: radiance images, statistics, stored hits and spheres.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -29,6 +30,9 @@ struct CausticRun {
 // frames > 1 runs the graph repeatedly (frame index 0..frames-1) and returns the last frame.
 Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, const scene::Camera& camera,
                                uint32_t width, uint32_t height, const CausticsSettings& settings, uint32_t frames = 1);
+// One frame per camera (a moving view; each frame's prevViewProj is the camera before it).
+Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, std::span<const scene::Camera> cameras,
+                               uint32_t width, uint32_t height, const CausticsSettings& settings);
 
 // Sum of `images` over several independent frames (different seeds) divided by their count.
 }  // namespace caustics::test

@@ -40,14 +40,14 @@ TEST_F(PassTranslation, RecordsEveryPassOfTheModule) {
     std::set<std::string> names;
     for (const auto& p : *pipelines) names.insert(p.debugName);
     // G-buffer, direct lighting, composite, caustic maps, forward (float + fixed), backward, gather,
-    // resolve, temporal, a-trous, history.
+    // resolve, temporal, variance, a-trous weights, a-trous, history.
     EXPECT_GE(names.size(), 12u);
     int rayTracing = 0, graphics = 0, compute = 0;
     for (const auto& p : *pipelines)
         (p.kind == PipelineKind::RayTracing ? rayTracing : p.kind == PipelineKind::Graphics ? graphics : compute)++;
     EXPECT_GE(rayTracing, 8);   // direct, forward, backward, gather; twice
     EXPECT_GE(graphics, 4);     // G-buffer, caustic maps; twice
-    EXPECT_GE(compute, 10);     // composite and the four filter/resolve kernels; twice
+    EXPECT_GE(compute, 10);     // composite and the six filter/resolve kernels; twice
 }
 
 // Every binding becomes a descriptor range in register space = layout index, register = slot, of

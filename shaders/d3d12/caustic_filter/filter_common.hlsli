@@ -1,0 +1,33 @@
+#ifndef CAUSTICS_CAUSTIC_FILTER_COMMON_HLSLI
+#define CAUSTICS_CAUSTIC_FILTER_COMMON_HLSLI
+// Helpers shared by the caustic filter's compute shaders (mirror of shaders/vulkan/caustic_filter/
+// filter_common.glsl; docs/caustics.md, "Filter").
+
+// Rec. 709 luminance: the scalar whose moments and differences guide the filter (SVGF section 4.2).
+float filterLuminance(float3 c) { return dot(c, float3(0.2126f, 0.7152f, 0.0722f)); }
+
+// B3-spline a-trous kernel taps for |offset| = 0, 1, 2 (1/16 (1 4 6 4 1)).
+static const float kFilterKernel[3] = {3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};
+
+// Relative linear-depth tolerance for a reprojected history tap up to one pixel away: 1 % plus the
+// depth change across two pixel footprints on a surface seen at the given angle.
+float filterRelativeDepthTolerance(float tanHalfFovY, float imageHeight, float3 normal, float3 toEye) {
+    float cosView = max(abs(dot(normal, toEye)), 0.05f);
+    float tanView = sqrt(max(0.0f, 1.0f - cosView * cosView)) / cosView;
+    return 0.01f + 2.0f * (2.0f * tanHalfFovY / imageHeight) * tanView;
+}
+
+// Weight with which source pixel q spreads its radiance to pixel p = q + offset in one a-trous
+// iteration (SVGF's edge-stopping functions; the formulas and why the luminance term uses
+// Var_q + Var_p are in filter_common.glsl).
+float filterSpreadWeight(int2 offset, int stepWidth, float zq, float zp, float2 gradZq, float3 nq, float3 np,
+                         float lq, float lp, float varianceQ, float varianceP, float sigmaLuminance) {
+    int2 k = abs(offset) / stepWidth;
+    float planar = dot(gradZq, float2(offset));
+    float wz = exp(-abs(zp - zq - planar) / (abs(planar) + 0.002f * zq * float(stepWidth)));
+    float wn = pow(max(0.0f, dot(nq, np)), 128.0f);
+    float wl = exp(-abs(lp - lq) / (sigmaLuminance * sqrt(varianceQ + varianceP) + 1e-20f));
+    return kFilterKernel[k.x] * kFilterKernel[k.y] * wz * wn * wl;
+}
+
+#endif

@@ -1,0 +1,50 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+// Variance of the accumulated luminance: the scale of the a-trous luminance edge-stopping (SVGF
+// section 4.2; docs/caustics.md "Filter"). With 4 or more frames of history it is temporal: the
+// per-frame variance E[l^2] - E[l]^2 from the accumulated moments. Shorter histories use a spatial
+// estimate of the photon shot noise: a pixel's caustic radiance is a sum of photon splats, so its
+// per-frame variance is about q E[l], q being the luminance one photon adds (a compound Poisson sum
+// of near-equal quanta). q is the smallest non-zero luminance of this frame in the 7x7 window (a
+// pixel that one photon reached), E[l] is estimated by the pixel's own accumulated luminance (the
+// a-trous passes spread a pixel by its own noise; a zero pixel has nothing to spread). SVGF's 7x7 sample
+// variance would count a focal spot's own shape as noise and blur it away; shot noise grows only as
+// the square root of the photon count, so a bright spot of many photons keeps its edges.
+// Output alpha: the variance of the accumulated mean, per-frame variance / n.
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "caustic_filter/filter_common.glsl"
+layout(set = 0, binding = 0) uniform texture2D current;          // this frame, unfiltered
+layout(set = 0, binding = 1) uniform texture2D temporalColor;
+layout(set = 0, binding = 2) uniform texture2D temporalMoments;  // x E[l], y E[l^2], z n
+layout(set = 0, binding = 3) uniform utexture2D gObjectId;
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D outColor;
+layout(push_constant) uniform Push { int width; int height; } pc;
+
+const float kTemporalHistory = 4.0;   // SVGF's threshold for trusting the temporal moments
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (p.x >= pc.width || p.y >= pc.height) return;
+    vec3 accumulated = texelFetch(temporalColor, p, 0).rgb;
+    vec3 moments = texelFetch(temporalMoments, p, 0).xyz;
+    uint id = texelFetch(gObjectId, p, 0).r;
+    float n = max(moments.z, 1.0);
+    float variance = 0.0;
+    if (id != 0u && n >= kTemporalHistory) {
+        variance = max(0.0, moments.y - moments.x * moments.x);
+    } else if (id != 0u) {
+        float quantum = 3.0e38;
+        for (int dy = -3; dy <= 3; ++dy) {
+            for (int dx = -3; dx <= 3; ++dx) {
+                ivec2 q = p + ivec2(dx, dy);
+                if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
+                if (texelFetch(gObjectId, q, 0).r != id) continue;
+                float l = filterLuminance(texelFetch(current, q, 0).rgb);
+                if (l > 0.0) quantum = min(quantum, l);
+            }
+        }
+        if (quantum < 3.0e38) variance = quantum * filterLuminance(accumulated);
+    }
+    imageStore(outColor, p, vec4(accumulated, variance / n));
+}
