@@ -9,10 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)
-launcher=""
-if command -v ccache >/dev/null; then launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"; fi
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCAUSTICS_SANITIZE=ON \
-  -DCAUSTICS_WITH_D3D12=OFF $launcher >/dev/null
+  -DCAUSTICS_WITH_D3D12=OFF >/dev/null
 cmake --build build-sanitize -j "$jobs" --target gltf_fuzz_tests caustics-sponza image-check
 # Mesa's lavapipe and the Vulkan loader are not instrumented and keep allocations until exit: leak
 # reports from them would be noise, so leak checking is off; ASan still catches every bad access.
