@@ -149,8 +149,7 @@ Result<LiveScene> LiveScene::create(rhi::IDevice& device, const scene::GpuScene&
 Result<LiveSceneFrame> LiveScene::addUpdatePass(rg::RenderGraph& graph, const scene::Scene& scene, uint32_t slot,
                                                 const HostSceneTables& host) {
     if (slot >= slots_.size()) return makeError("LiveScene: frame slot " + std::to_string(slot) + " out of range");
-    if (host.tlas && !host.tlas->desc().isTopLevel)
-        return makeError("HostSceneTables::tlas '" + host.tlas->desc().debugName + "' is not a top-level acceleration structure");
+    CAUSTICS_CHECK(checkHostSceneTables(host, scene));
     const bool buildTlas = !host.tlas;
     CAUSTICS_TRY(auto packed, packFrame(scene, *gpuScene_, buildTlas));
     std::shared_ptr<Slot> s = slots_[slot];

@@ -18,6 +18,8 @@
 #include "caustics/rhi/accel_struct.h"
 #include "caustics/rhi/resource_state.h"
 #include "caustics/rhi/resources.h"
+#include "caustics/rhi/result.h"
+#include "caustics/scene/scene.h"
 
 namespace caustics {
 
@@ -27,5 +29,12 @@ struct HostSceneTables {
     rhi::ResourceState tlasState = rhi::ResourceState::AccelStructRead;
     rhi::BufferHandle positions, vertices, indices, materials, instances;
 };
+
+// ok, or an error naming the first table the module cannot bind for `scene`: a TLAS that is not top
+// level, a buffer without Storage usage, geometry tables not given as a set (positions, vertices and
+// indices: the instance rows index all three), or an instance or material table with fewer rows than
+// the scene has instances or materials (the hit shaders would read past its end). Device-free; the
+// module calls it at every addPasses.
+Status checkHostSceneTables(const HostSceneTables& tables, const scene::Scene& scene);
 
 }  // namespace caustics

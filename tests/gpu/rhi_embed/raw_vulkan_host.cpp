@@ -262,6 +262,15 @@ void RawVulkanHost::imageBarrier(VkImage image, VkImageLayout oldLayout, VkImage
     vkCmdPipelineBarrier2(commandBuffer, &dep);
 }
 
+void RawVulkanHost::memoryBarrier(VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                                  VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
+    const VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2, nullptr, srcStage, srcAccess, dstStage, dstAccess};
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.memoryBarrierCount = 1;
+    dep.pMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(commandBuffer, &dep);
+}
+
 std::vector<std::string> RawVulkanHost::messages() {
     std::lock_guard lock(mutex_);
     return messages_;

@@ -50,6 +50,10 @@ public:
     void imageBarrier(VkImage image, VkImageLayout oldLayout, VkImageLayout newLayout, VkPipelineStageFlags2 srcStage,
                       VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
 
+    // A raw global memory barrier (e.g. copy writes -> host reads, AS build writes -> AS reads).
+    void memoryBarrier(VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
+                       VkAccessFlags2 dstAccess);
+
     std::vector<std::string> messages();
 
     VkInstance instance = VK_NULL_HANDLE;

@@ -152,15 +152,8 @@ std::vector<uint32_t> runHostFrame(RawVulkanHost& host, IDevice& device, bool al
         region.imageExtent = {kWidth, kHeight, 1};
         vkCmdCopyImageToBuffer(host.commandBuffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
                                &region);
-        VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-        toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-        toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &toHost;
-        vkCmdPipelineBarrier2(host.commandBuffer, &dep);
+        host.memoryBarrier(VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                           VK_ACCESS_2_HOST_READ_BIT);
 
         auto signal = vulkanSubmitSignal(device, *cmd.value());
         EXPECT_TRUE(signal.ok()) << (signal.ok() ? "" : signal.message());
