@@ -1,6 +1,8 @@
 #include "cli_numbers.h"
 
 #include <charconv>
+#include <cmath>
+#include <sstream>
 
 namespace caustics::sample {
 
@@ -14,6 +16,19 @@ Result<uint32_t> parseWholeNumber(const std::string& option, const std::string& 
     if (ec != std::errc() || end != text.data() + text.size())
         return makeError(option + ": '" + text + "' is not a whole number in " + range);
     if (value < lo || value > hi) return makeError(option + ": " + text + " is outside " + range);
+    return value;
+}
+
+Result<float> parsePositiveNumber(const std::string& option, const std::string& text, float hi) {
+    char* end = nullptr;
+    float value = std::strtof(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+        return makeError(option + ": '" + text + "' is not a number");
+    if (value <= 0.0f || value > hi) {
+        std::ostringstream s;
+        s << option << ": " << text << " is outside (0, " << hi << "]";
+        return makeError(s.str());
+    }
     return value;
 }
 

@@ -103,7 +103,7 @@ const char* cliUsage() {
            "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
            "  --no-second-type        skip caustics seen through glass (the backward sphere pass)\n"
            "  --exposure X            linear exposure before tone mapping (default 1)\n"
-           ) + sampleControlsUsage() + std::string(
+           ) + sampleControlsUsage() + animationUsage() + std::string(
            "  --reference             also render the CPU reference light tracer (to FILE.reference.exr)\n"
            "  --reference-photons N   photons per light for --reference\n"
            "  --validation            enable Vulkan validation layers\n"
@@ -121,6 +121,9 @@ bool takesValue(const std::string& a) {
     SampleControls probe;
     auto control = parseSampleControl(a, "", probe);   // an error or true: one of the sample controls
     if (!control || *control) return true;
+    AnimationOptions animationProbe;
+    auto animation = parseAnimationOption(a, "", animationProbe);
+    if (!animation || *animation) return true;
     static const char* const kValueOptions[] = {
         "--scene", "--sponza", "--backend", "--out", "--graph-dot", "--aov", "--camera", "--width", "--height",
         "--frames", "--map-resolution", "--max-stored-hits", "--max-depth", "--rays-per-texel", "--exposure",
@@ -190,11 +193,15 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
         else if (a == "--reference-photons") { CAUSTICS_TRY(o.referencePhotons, parseUint(a, value, 1, 1'000'000'000u)); }
         else {
             CAUSTICS_TRY(bool known, parseSampleControl(a, value, o.controls));
+            if (!known) {
+                CAUSTICS_TRY(known, parseAnimationOption(a, value, o.animation));
+            }
             if (!known) return makeError("unknown option '" + a + "' (see --help)");
         }
 #undef CLI_VALUE
     }
     CAUSTICS_CHECK(validateSampleControls(o.controls, o.window, o.framesGiven));
+    CAUSTICS_CHECK(finishAnimationOptions(o.animation, o.window, o.framesGiven, o.controls.accumulate));
     if (outGiven) CAUSTICS_CHECK(checkOutputExtension("--out", o.outPath, {".png", ".exr"}));
     if (dotGiven && o.graphDotPath.empty()) return makeError("--graph-dot: the path is empty");
     if (!o.scriptPath.empty() && !o.window) return makeError("--script: needs --window (it drives the viewer)");

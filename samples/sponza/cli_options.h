@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "caustics/rhi/result.h"
+#include "animation_options.h"
 #include "sample_controls.h"
 
 namespace caustics::sample {
@@ -46,6 +47,7 @@ struct CliOptions {
     bool secondType = true;
     float exposure = 1.0f;
     SampleControls controls;              // --seed, --accumulate, --sphere-* (sample_controls.h)
+    AnimationOptions animation;           // --animate, --animate-speed, --animate-frames (animation_options.h)
     bool validation = false;
     bool help = false;
 };

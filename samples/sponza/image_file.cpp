@@ -28,6 +28,12 @@ Status writeImage8(const std::string& path, uint32_t width, uint32_t height, con
     return okStatus();
 }
 
+Status writeRenderedImage(const std::string& path, uint32_t width, uint32_t height, const std::vector<uint8_t>& display,
+                          const std::vector<float>& hdr) {
+    bool exr = path.size() > 4 && path.substr(path.size() - 4) == ".exr";
+    return exr ? writeImage(path, FloatImage{width, height, 4, hdr}) : writeImage8(path, width, height, display);
+}
+
 Result<FloatImage> readImage(const std::string& path) {
     auto in = OIIO::ImageInput::open(path);
     if (!in) return makeError("cannot read '" + path + "': " + OIIO::geterror());

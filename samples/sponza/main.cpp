@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "camera_setup.h"
+#include "animation_render.h"
 #include "caustics/caustics_module.h"
 #include "cli_options.h"
 #include "frame_budget.h"
@@ -66,7 +67,7 @@ std::string referencePath(const sample::CliOptions& o) {
 
 // Every file the run will write is checked before the scene is loaded: a bad path costs nothing.
 Status checkOutputs(const sample::CliOptions& o) {
-    if (!o.outPath.empty()) CAUSTICS_CHECK(sample::checkWritable("--out", o.outPath));
+    if (!o.outPath.empty()) CAUSTICS_CHECK(sample::checkWritable("--out", sample::framePath(o.outPath, 0)));
     if (!o.graphDotPath.empty()) CAUSTICS_CHECK(sample::checkWritable("--graph-dot", o.graphDotPath));
     if (o.reference) CAUSTICS_CHECK(sample::checkWritable("--reference", referencePath(o)));
     return okStatus();
@@ -133,6 +134,10 @@ int run(const sample::CliOptions& o) {
     std::printf("scene: %s%s (%zu instances, %zu lights)\n", scene.name.c_str(),
                 scene.isStandIn ? " [generated stand-in, not the real asset]" : "", scene.instances.size(),
                 scene.lights.size());
+    if (Status st = sample::checkAnimatedLights(o.animation.toggles, scene.lights.size(), "--animate"); !st) {
+        std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
+        return 1;
+    }
 
     rhi::DeviceDesc dd;
     dd.backend = *rhi::parseBackend(o.backend);
@@ -172,7 +177,8 @@ int run(const sample::CliOptions& o) {
         return 1;
     }
     scene::Camera camera = sample::cameraFromOptions(scene, o);
-    auto still = sample::renderStill(**renderer, camera, o);
+    auto still = o.animation.frames > 0 ? sample::renderAnimation(**renderer, scene, camera, o)
+                                        : sample::renderStill(**renderer, camera, o);
     if (!still) {
         std::fprintf(stderr, "caustics-sponza: %s\n", still.message().c_str());
         return 1;
@@ -187,16 +193,9 @@ int run(const sample::CliOptions& o) {
         }
         std::printf("wrote %s\n", o.graphDotPath.c_str());
     }
-    if (!o.outPath.empty()) {
+    if (!o.outPath.empty() && o.outPath.find(sample::kFrameToken) == std::string::npos) {
         const sample::FrameImages& img = *still;
-        Status st = okStatus();
-        if (o.outPath.size() > 4 && o.outPath.substr(o.outPath.size() - 4) == ".exr") {
-            sample::FloatImage f{img.width, img.height, 4, img.hdr};
-            st = sample::writeImage(o.outPath, f);
-        } else {
-            st = sample::writeImage8(o.outPath, img.width, img.height, img.display);
-        }
-        if (!st) {
+        if (Status st = sample::writeRenderedImage(o.outPath, img.width, img.height, img.display, img.hdr); !st) {
             std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
             return 1;
         }

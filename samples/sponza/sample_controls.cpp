@@ -1,8 +1,5 @@
 #include "sample_controls.h"
 
-#include <cmath>
-#include <sstream>
-
 #include "cli_numbers.h"
 
 namespace caustics::sample {
@@ -10,20 +7,6 @@ namespace {
 
 Result<uint32_t> parseWhole(const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
     return parseWholeNumber(option, text, lo, hi);
-}
-
-// A number in (0, hi]: zero and negatives are refused, not clamped.
-Result<float> parsePositive(const std::string& option, const std::string& text, float hi) {
-    char* end = nullptr;
-    float value = std::strtof(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
-        return makeError(option + ": '" + text + "' is not a number");
-    if (value <= 0.0f || value > hi) {
-        std::ostringstream s;
-        s << option << ": " << text << " is outside (0, " << hi << "]";
-        return makeError(s.str());
-    }
-    return value;
 }
 
 }  // namespace
@@ -34,9 +17,9 @@ Result<bool> parseSampleControl(const std::string& option, const std::string& va
     } else if (option == "--accumulate") {
         CAUSTICS_TRY(c.accumulate, parseWhole(option, value, 1, kMaxAccumulatedFrames));
     } else if (option == "--sphere-radius-scale") {
-        CAUSTICS_TRY(c.sphereRadiusScale, parsePositive(option, value, kMaxSphereRadiusScale));
+        CAUSTICS_TRY(c.sphereRadiusScale, parsePositiveNumber(option, value, kMaxSphereRadiusScale));
     } else if (option == "--sphere-world-radius") {
-        CAUSTICS_TRY(c.sphereWorldRadius, parsePositive(option, value, kMaxSphereWorldRadius));
+        CAUSTICS_TRY(c.sphereWorldRadius, parsePositiveNumber(option, value, kMaxSphereWorldRadius));
         c.sphereWorldRadiusGiven = true;
     } else if (option == "--sphere-radius-policy") {
         if (value == "pixel") c.sphereRadiusPolicy = SphereRadiusChoice::Pixel;

@@ -78,6 +78,7 @@ const std::map<std::string, Setter>& setters() {
         {"atrousIterations", countField(&CausticsSettings::atrousIterations)},
         {"filterLuminanceSigma", floatField(&CausticsSettings::filterLuminanceSigma)},
         {"exposure", floatField(&CausticsSettings::exposure)},
+        {"framesInFlight", countField(&CausticsSettings::framesInFlight)},
         {"seed", countField(&CausticsSettings::seed)},
         {"aov",
          [](CausticsSettings& s, const std::string& f, const std::string& v) -> Status {

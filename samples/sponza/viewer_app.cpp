@@ -41,23 +41,42 @@ void processInput(ViewerContext& v, float seconds) {
     if (axes != glm::vec3(0.0f)) v.camera.move(axes, seconds);
 }
 
-// Settings go to the module at once; light edits rebuild it (the module reads lights at creation)
-// when the slider is let go.
+// framesInFlight is fixed at CausticsModule::create (it sizes the per-frame scene tables): the only
+// edit that builds a new module. Every other setting is per frame (setSettings).
+Status rebuildModule(ViewerContext& v) {
+    uint32_t before = (*v.module)->settings().framesInFlight;
+    v.renderer.reset();
+    v.module->reset();
+    CAUSTICS_TRY(*v.module, CausticsModule::create(v.device, *v.scene, *v.gpuScene, v.state.settings));
+    CAUSTICS_TRY(v.renderer, FrameRenderer::create(v.device, **v.module, v.state.width, v.state.height));
+    ++v.moduleBuilds;
+    report(v, "rebuilt the caustics module: framesInFlight " + std::to_string(before) + " -> " +
+                  std::to_string(v.state.settings.framesInFlight) + " is fixed at creation", false);
+    return okStatus();
+}
+
+// Settings go to the module at once through setSettings; lights go through the live scene (the
+// animation writes them into the scene every frame), so neither waits for anything.
 Status applyEdits(ViewerContext& v) {
     if (v.state.settingsChanged) {
         v.state.settingsChanged = false;
-        if (Status st = (*v.module)->setSettings(v.state.settings); !st) {
+        if (v.state.settings.framesInFlight != (*v.module)->settings().framesInFlight) {
+            if (Status st = v.state.settings.validate(); !st) {
+                v.state.settings = (*v.module)->settings();
+                report(v, st.message(), true);
+            } else {
+                CAUSTICS_CHECK(rebuildModule(v));
+            }
+        } else if (Status st = (*v.module)->setSettings(v.state.settings); !st) {
             v.state.settings = (*v.module)->settings();
             report(v, st.message(), true);
+        } else {
+            ++v.liveSettingsChanges;
         }
     }
-    if (v.state.lightsChanged && !v.state.lightEditActive) {
+    if (v.state.lightsChanged) {
         v.state.lightsChanged = false;
-        v.renderer.reset();
-        v.module->reset();
-        v.scene->lights = v.state.lights;
-        CAUSTICS_TRY(*v.module, CausticsModule::create(v.device, *v.scene, *v.gpuScene, v.state.settings));
-        CAUSTICS_TRY(v.renderer, FrameRenderer::create(v.device, **v.module, v.state.width, v.state.height));
+        ++v.liveLightEdits;
     }
     int width = 0, height = 0;
     glfwGetFramebufferSize(v.window, &width, &height);
@@ -69,6 +88,17 @@ Status applyEdits(ViewerContext& v) {
         CAUSTICS_TRY(v.renderer, FrameRenderer::create(v.device, **v.module, v.state.width, v.state.height));
     }
     return okStatus();
+}
+
+// Advances the clocks by the last frame's time (fixed under --script) and writes this frame's poses
+// and lights into the scene the module reads.
+void animateScene(ViewerContext& v, float seconds) {
+    v.animation.toggles = v.state.animation;
+    if (v.state.frame > 0) v.animation.advance(v.fixedClock ? kFixedFrameSeconds : seconds);
+    v.animation.apply(*v.scene, v.state.lights);
+    v.state.glassCount = v.animation.glassCount();
+    v.state.objectSeconds = v.animation.objectSeconds();
+    v.state.lightSeconds = v.animation.lightSeconds();
 }
 
 void recordMeasurements(ViewerContext& v, double frameMs) {
@@ -140,6 +170,7 @@ int loop(ViewerContext& v, const Script& script) {
             std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
             return 1;
         }
+        animateScene(v, seconds);
         scene::Camera camera = v.camera.camera();
         fitClipPlanes(camera, v.bounds);
         if (Status st = v.renderer->render(camera, v.state.frame, true); !st) {
@@ -155,12 +186,11 @@ int loop(ViewerContext& v, const Script& script) {
         glfwSwapBuffers(v.window);
         ++v.state.frame;
     }
+    std::printf("caustics-sponza: the caustics module was built %u time(s); %u light edits and %u settings changes "
+                "went to it live\n", v.moduleBuilds, v.liveLightEdits, v.liveSettingsChanges);
     if (!o.outPath.empty()) {
         const FrameImages& img = v.renderer->images();
-        bool exr = o.outPath.size() > 4 && o.outPath.substr(o.outPath.size() - 4) == ".exr";
-        Status st = exr ? writeImage(o.outPath, FloatImage{img.width, img.height, 4, img.hdr})
-                        : writeImage8(o.outPath, img.width, img.height, img.display);
-        if (!st) {
+        if (Status st = writeRenderedImage(o.outPath, img.width, img.height, img.display, img.hdr); !st) {
             std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
             return 1;
         }
@@ -203,6 +233,9 @@ int runViewer(rhi::DeviceHandle device, scene::Scene& scene, const scene::GpuSce
     v.camera = ViewerCamera(cameraFromOptions(scene, o), v.bounds.radius());
     v.state.settings = module->settings();
     v.state.lights = scene.lights;
+    v.animation = SceneAnimation::capture(scene);
+    v.state.animation = o.animation.toggles;
+    v.fixedClock = !o.scriptPath.empty();
     v.state.sceneCameras = scene.cameras;
     v.state.sceneName = scene.name + (scene.isStandIn ? " [stand-in]" : "");
     v.state.deviceName = device->capabilities().adapterName;

@@ -13,7 +13,9 @@
 
 namespace caustics::sample {
 
-// `scene` must be the one `module` and `gpuScene` were made from; light edits rebuild `module` from it.
+// `scene` must be the one `module` and `gpuScene` were made from: the viewer rewrites its lights and glass
+// instances every frame (the module's live scene); only a framesInFlight change rebuilds `module` from it.
+// options.animation's lights must exist (main checks them).
 // Returns the process exit code.
 int runViewer(rhi::DeviceHandle device, scene::Scene& scene, const scene::GpuScene& gpuScene,
               std::unique_ptr<CausticsModule>& module, const CliOptions& options, const Script& script);

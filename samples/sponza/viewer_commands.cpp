@@ -2,6 +2,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include "animation_options.h"
 #include "image_file.h"
 #include "settings_fields.h"
 #include "viewer_context.h"
@@ -16,7 +17,7 @@ Result<float> number(const std::string& text, const std::string& where) {
 
 Result<glm::vec3> vec3At(const std::vector<std::string>& w, size_t first, const std::string& where) {
     if (w.size() < first + 3) return makeError(where + ": expected three numbers after '" + w[first - 1] + "'");
-    glm::vec3 v;
+    glm::vec3 v(0.0f);
     for (int i = 0; i < 3; ++i) {
         CAUSTICS_TRY(v[i], number(w[first + size_t(i)], where));
     }
@@ -83,6 +84,37 @@ Status lightCommand(ViewerContext& v, const std::vector<std::string>& w, const s
     return okStatus();
 }
 
+Result<bool> onOff(const std::string& word, const std::string& where, const char* what) {
+    if (word == "on") return true;
+    if (word == "off") return false;
+    return makeError(where + ": " + what + " takes on or off, not '" + word + "'");
+}
+
+// animate objects on|off | light N orbit|still | speed X | pause on|off
+Status animateCommand(ViewerContext& v, const std::vector<std::string>& w, const std::string& where) {
+    AnimationToggles& a = v.state.animation;
+    const std::string& what = w[1];
+    if (what == "objects" && w.size() == 3) {
+        CAUSTICS_TRY(a.objects, onOff(w[2], where, "animate objects"));
+    } else if (what == "pause" && w.size() == 3) {
+        CAUSTICS_TRY(a.paused, onOff(w[2], where, "animate pause"));
+    } else if (what == "speed" && w.size() == 3) {
+        CAUSTICS_TRY(float speed, number(w[2], where));
+        if (!(speed > 0.0f && speed <= kMaxAnimationSpeed))
+            return makeError(where + ": animate speed must be within (0, " + std::to_string(int(kMaxAnimationSpeed)) + "]");
+        a.speed = speed;
+    } else if (what == "light" && w.size() == 4 && (w[3] == "orbit" || w[3] == "still")) {
+        CAUSTICS_TRY(float index, number(w[2], where));
+        if (index < 0 || index != std::floor(index)) return makeError(where + ": '" + w[2] + "' is not a light index");
+        CAUSTICS_CHECK(checkAnimatedLights({.orbitingLights = {uint32_t(index)}}, v.state.lights.size(), where));
+        if (w[3] == "orbit") a.orbitingLights.insert(uint32_t(index));
+        else a.orbitingLights.erase(uint32_t(index));
+    } else {
+        return makeError(where + ": animate takes objects on|off | light N orbit|still | speed X | pause on|off");
+    }
+    return okStatus();
+}
+
 }  // namespace
 
 void handleKeyPress(ViewerContext& v, int key) {
@@ -100,6 +132,11 @@ void handleKeyPress(ViewerContext& v, int key) {
                 v.camera.setView(v.state.sceneCameras[size_t(v.state.sceneCameraIndex)]);
             }
             break;
+        case GLFW_KEY_M: v.state.animation.objects = !v.state.animation.objects; break;
+        case GLFW_KEY_O:
+            if (!v.state.lights.empty() && !v.state.animation.orbitingLights.erase(0)) v.state.animation.orbitingLights.insert(0);
+            break;
+        case GLFW_KEY_P: v.state.animation.paused = !v.state.animation.paused; break;
         default: break;
     }
 }
@@ -134,8 +171,7 @@ Status runScriptCommand(ViewerContext& v, const std::vector<std::string>& w, con
             return makeError(where + ": resize takes a size within [16, 8192]");
         glfwSetWindowSize(v.window, int(width), int(height));
     } else if (command == "animate") {
-        return makeError(where + ": animate needs the module's live scene API (instances and lights per frame), "
-                                 "which this build does not have yet");
+        return animateCommand(v, w, where);
     } else if (command == "quit") {
         v.state.quit = true;
     }

@@ -9,6 +9,7 @@
 #include "caustics/caustics_module.h"
 #include "cli_options.h"
 #include "frame_renderer.h"
+#include "scene_animation.h"
 #include "viewer_input.h"
 #include "viewer_state.h"
 
@@ -28,6 +29,10 @@ struct ViewerContext {
     ViewerState state;
     ViewerCamera camera{scene::Camera{}, 1.0f};
     SceneBounds bounds;
+    SceneAnimation animation;
+    bool fixedClock = false;                       // --script: kFixedFrameSeconds per frame, not wall time
+    uint32_t moduleBuilds = 1;                     // main built the first; only framesInFlight rebuilds
+    uint32_t liveLightEdits = 0, liveSettingsChanges = 0;   // frames whose edits went to the module live
     std::vector<std::string> pendingScreenshots;   // written after this frame is drawn
 };
 
@@ -35,7 +40,8 @@ struct ViewerContext {
 Status runScriptCommand(ViewerContext& v, const std::vector<std::string>& words, const std::string& where);
 
 // A key press (from GLFW or a script tap): Escape quits, F12 screenshots, Tab toggles the panel,
-// C switches orbit/fly, R resets the camera, G steps through the glTF cameras.
+// C switches orbit/fly, R resets the camera, G steps through the glTF cameras, M moves the glass,
+// O orbits light 0, P pauses the animation.
 void handleKeyPress(ViewerContext& v, int key);
 
 // Writes `path`: .png = the window as shown (panel included, read from the back buffer), .exr = the

@@ -16,7 +16,7 @@ struct Arity {
 const std::map<std::string, Arity>& commandArity() {
     static const std::map<std::string, Arity> table = {
         {"set", {2, 2}},        {"key", {1, 1}},     {"screenshot", {1, 1}}, {"camera", {1, 7}},
-        {"light", {3, 5}},      {"ui", {1, 1}},      {"resize", {2, 2}},     {"animate", {2, 2}},
+        {"light", {3, 5}},      {"ui", {1, 1}},      {"resize", {2, 2}},     {"animate", {2, 3}},
         {"quit", {0, 0}},
     };
     return table;

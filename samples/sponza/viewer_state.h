@@ -9,6 +9,7 @@
 
 #include "caustics/caustics_settings.h"
 #include "caustics/scene/scene.h"
+#include "scene_animation.h"
 #include "viewer_camera.h"
 
 namespace caustics::sample {
@@ -28,9 +29,9 @@ private:
 struct ViewerState {
     CausticsSettings settings;             // edited; the loop applies it with setSettings
     bool settingsChanged = false;
-    std::vector<scene::Light> lights;      // edited copy of the scene's lights
-    bool lightsChanged = false;            // applied when the edit ends (the module is rebuilt)
-    bool lightEditActive = false;          // a slider is being dragged
+    std::vector<scene::Light> lights;      // the lights at rest, as edited (the animation turns orbiting ones)
+    bool lightsChanged = false;            // an edit this frame: it reaches the module through the live scene
+    AnimationToggles animation;            // edited; the loop hands it to SceneAnimation every frame
     std::vector<scene::Camera> sceneCameras;
     int sceneCameraIndex = -1;
     bool showUi = true;
@@ -44,6 +45,8 @@ struct ViewerState {
     std::map<std::string, History> passMs; // GPU time per render-graph pass
     std::vector<std::string> passOrder;    // as the graph ran them
     std::vector<uint32_t> stats;           // caustic_passes.h kStat* of the last frame
+    size_t glassCount = 0;                 // instances the animation moves
+    float objectSeconds = 0.0f, lightSeconds = 0.0f;   // the animation clocks
     uint32_t width = 0, height = 0;
     uint32_t frame = 0;
     std::string lastMessage;               // the last screenshot or error, shown in the panel

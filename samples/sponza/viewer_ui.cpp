@@ -107,6 +107,9 @@ void settingsSection(ViewerState& s) {
     int seed = int(c.seed);
     if (ImGui::InputInt("seed", &seed) && seed >= 0) c.seed = uint32_t(seed), changed = true;
     int aov = int(c.aov);
+    int framesInFlight = int(c.framesInFlight);
+    if (ImGui::SliderInt("frames in flight (rebuilds)", &framesInFlight, 1, int(CausticsSettings::kMaxFramesInFlight)))
+        c.framesInFlight = uint32_t(framesInFlight), changed = true;
     if (ImGui::Combo("AOV", &aov, "final\0direct\0caustics\0first type\0second type\0albedo\0normal\0depth\0"))
         c.aov = CausticsAov(aov), changed = true;
     s.settingsChanged |= changed;
@@ -114,7 +117,6 @@ void settingsSection(ViewerState& s) {
 
 void lightsSection(ViewerState& s) {
     if (!ImGui::CollapsingHeader("Lights")) return;
-    bool active = false;
     for (size_t i = 0; i < s.lights.size(); ++i) {
         scene::Light& l = s.lights[i];
         ImGui::PushID(int(i));
@@ -142,13 +144,31 @@ void lightsSection(ViewerState& s) {
                 l.innerConeAngle = inner / kDegrees;
                 l.outerConeAngle = outer / kDegrees;
             }
-            active |= ImGui::IsAnyItemActive();
-            s.lightsChanged |= edited;
+            s.lightsChanged |= edited;   // live: no rebuild, so it follows the slider while dragged
             ImGui::TreePop();
         }
         ImGui::PopID();
     }
-    s.lightEditActive = active;
+}
+
+void animateSection(ViewerState& s) {
+    if (!ImGui::CollapsingHeader("Animate", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    AnimationToggles& a = s.animation;
+    char label[96];
+    std::snprintf(label, sizeof(label), "glass objects move (%zu)", s.glassCount);
+    ImGui::Checkbox(label, &a.objects);
+    for (size_t i = 0; i < s.lights.size(); ++i) {
+        bool orbit = a.orbitingLights.count(uint32_t(i)) != 0;
+        std::snprintf(label, sizeof(label), "orbit: %zu %s", i, s.lights[i].name.c_str());
+        if (ImGui::Checkbox(label, &orbit)) {
+            if (orbit) a.orbitingLights.insert(uint32_t(i));
+            else a.orbitingLights.erase(uint32_t(i));
+        }
+    }
+    ImGui::SliderFloat("speed", &a.speed, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    ImGui::Checkbox("pause", &a.paused);
+    ImGui::SameLine();
+    ImGui::TextDisabled("clocks: glass %.2f s, lights %.2f s", double(s.objectSeconds), double(s.lightSeconds));
 }
 
 void cameraSection(ViewerState& s, ViewerCamera& camera) {
@@ -169,6 +189,7 @@ void cameraSection(ViewerState& s, ViewerCamera& camera) {
     }
     ImGui::TextDisabled("right drag: look/orbit  WASD QE: fly  wheel: dolly/speed");
     ImGui::TextDisabled("C: orbit/fly  R: reset  G: next glTF camera  F12: screenshot");
+    ImGui::TextDisabled("M: move glass  O: orbit light 0  P: pause animation");
     ImGui::TextDisabled("Tab: hide panel  Esc: quit");
 }
 
@@ -185,6 +206,7 @@ void drawViewerPanel(ViewerState& s, ViewerCamera& camera) {
     countersSection(s);
     settingsSection(s);
     lightsSection(s);
+    animateSection(s);
     cameraSection(s, camera);
     if (!s.lastMessage.empty()) ImGui::TextWrapped("%s", s.lastMessage.c_str());
     ImGui::End();

@@ -5,6 +5,8 @@
 //   image-check match A GOLDEN MAX [x y w h]      mean |A - GOLDEN| over the region is at most MAX
 //   image-check brighter A B MIN [x y w h]        mean(B) - mean(A) over the region is at least MIN
 //   image-check size FILE W H                     the image is W x H pixels
+//   image-check shift A B DX DY MAXERR [x y w h]  the brightness-weighted centroid moves from A to B by
+//                                                 (DX, DY) pixels, to within MAXERR pixels
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -41,9 +43,45 @@ double meanOver(const FloatImage& a, const FloatImage* b, const Region& r) {
     return sum / (3.0 * r.w * r.h);
 }
 
+// Centroid of the mean RGB over the region, pixel centres at +0.5; false when the region is black.
+bool centroid(const FloatImage& image, const Region& r, double& cx, double& cy) {
+    double sum = 0.0, sx = 0.0, sy = 0.0;
+    for (uint32_t y = r.y; y < r.y + r.h; ++y)
+        for (uint32_t x = r.x; x < r.x + r.w; ++x) {
+            size_t i = (size_t(y) * image.width + x) * image.channels;
+            double weight = (double(image.pixels[i]) + image.pixels[i + 1] + image.pixels[i + 2]) / 3.0;
+            sum += weight;
+            sx += weight * (x + 0.5);
+            sy += weight * (y + 0.5);
+        }
+    if (!(sum > 0.0)) return false;
+    cx = sx / sum;
+    cy = sy / sum;
+    return true;
+}
+
 int fail(const std::string& message) {
     std::fprintf(stderr, "image-check: %s\n", message.c_str());
     return 1;
+}
+
+// B's brightness-weighted centroid = A's + (DX, DY), to within MAXERR pixels.
+int checkShift(int argc, char** argv) {
+    if (argc != 7 && argc != 11) return fail("usage: image-check shift A B DX DY MAXERR [x y w h]");
+    auto a = caustics::sample::readImage(argv[2]);
+    auto b = caustics::sample::readImage(argv[3]);
+    if (!a || !b) return fail(!a ? a.message() : b.message());
+    if (a->width != b->width || a->height != b->height || a->channels < 3 || b->channels != a->channels)
+        return fail("the images differ in size or channels");
+    Region r;
+    if (!regionFrom(argv, argc, 7, *a, r)) return fail("bad region");
+    double ax, ay, bx, by;
+    if (!centroid(*a, r, ax, ay) || !centroid(*b, r, bx, by)) return fail("an image is black over the region");
+    double ex = ax + std::atof(argv[4]), ey = ay + std::atof(argv[5]), maxError = std::atof(argv[6]);
+    double error = std::hypot(bx - ex, by - ey);
+    std::printf("image-check: centroid (%.2f, %.2f) -> (%.2f, %.2f), expected (%.2f, %.2f): error %.2f px (need <= %.2f)\n",
+                ax, ay, bx, by, ex, ey, error, maxError);
+    return error <= maxError ? 0 : 1;
 }
 
 }  // namespace
@@ -66,6 +104,7 @@ int main(int argc, char** argv) {
         return mean >= min ? 0 : 1;
     }
     if (argc < 5) return fail("differ/match need two files and a threshold");
+    if (mode == "shift") return checkShift(argc, argv);
     auto b = caustics::sample::readImage(argv[3]);
     if (!b) return fail(b.message());
     if (a->width != b->width || a->height != b->height || a->channels < 3 || b->channels != a->channels)
