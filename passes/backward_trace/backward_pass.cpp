@@ -1,7 +1,9 @@
-// Second type (paper 3.3): caustics.backward (camera specular pixels -> spheres + TLAS instances),
-// caustics.spheres (TLAS over one unit-sphere BLAS, instances from the GPU buffer) and
-// caustics.gather (stored forward hits x spheres, any-hit density estimate).
-#include <cstring>
+// Second type (paper 3.3): caustics.specularPixels (specular_pixels_pass.cpp), caustics.backward
+// (specular pixels -> spheres + TLAS instances appended at a counter), caustics.spheres (TLAS over one
+// unit-sphere BLAS, over the frame's capacity of GPU-written instances, caustics/sphere_capacity.h),
+// caustics.gather (stored forward hits x spheres, any-hit density estimate) and caustics.sphereCount.
+// The cost follows the specular pixels and stored hits, not W x H (docs/caustics.md, "Second-type cost").
+#include <algorithm>
 
 #include "caustic_maps/caustic_internal.h"
 
@@ -10,20 +12,19 @@ namespace caustics {
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
     CausticResources::Impl& res = *f.res;
     const uint32_t pixels = f.width * f.height;
+    const bool indirect = res.device->capabilities().rayTracingIndirect;
+    prepareSphereBudget(f);
+    addSpecularPixelPass(graph, f);
     graph.addPass("caustics.backward", [&](rg::PassBuilder& b) {
         const CausticsSettings& s = f.in->settings;
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         if (f.in->sceneTlas.valid()) b.read(f.in->sceneTlas);
-        rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
-        rg::RgTexture optics = b.read(f.in->gbuffer.optics, rg::Access::SampledRead);
+        f.specularPixels = b.read(f.specularPixels, rg::Access::SampledRead);
+        if (indirect) f.backwardArgs = b.read(f.backwardArgs, rg::Access::IndirectArgument);
         f.spheres = b.write(b.createBuffer("caustics.spheres", rhi::BufferDesc().setByteSize(uint64_t(pixels) * sizeof(CausticSphere))
                                                                    .setUsage(rhi::BufferUsage::Storage).setDebugName("caustics.spheres")),
                             rg::Access::StorageWrite);
-        f.instances = b.write(b.createBuffer("caustics.sphereInstances",
-                                             rhi::BufferDesc().setByteSize(uint64_t(pixels) * sizeof(rhi::InstanceDesc))
-                                                 .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::AccelStructInput)
-                                                 .setDebugName("caustics.sphereInstances")),
-                              rg::Access::StorageWrite);
+        f.instances = b.write(f.instances, rg::Access::StorageWrite);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
         uint64_t blas = res.sphereBlas->deviceAddress();
         // Mirrors the push block of shaders/vulkan/backward_trace/backward.rgen.
@@ -32,7 +33,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
             float scale, worldRadius;
             uint32_t maxDepth, frame, blasLo, blasHi;
             float minMagnification, maxMagnification, minRadius, maxRadius;
-            uint32_t pad;
+            uint32_t sphereCapacity;   // set when the graph executes
         } push{s.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint ? 0u : 1u,
                s.sphereRadiusScale,
                s.sphereWorldRadius,
@@ -48,18 +49,21 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         static_assert(sizeof(Push) == kBackwardPushBytes);
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
-        return [=](rg::PassContext& ctx) {
+        return [=](rg::PassContext& ctx) mutable {
             CausticResources::Impl& r = *h.res;
             rhi::BindingSetDesc d;
             d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(h.camera)))
-                .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(objectId)))
-                .add(rhi::BindingSetItem::sampledTexture(2, ctx.texture(optics)))
                 .add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(h.spheres)))
                 .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.instances)))
-                .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.stats)));
+                .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.stats)))
+                .add(rhi::BindingSetItem::storageBuffer(6, ctx.buffer(h.specularPixels), false));
             rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.backwardLayout, d);
             if (!set) return;
-            recordSceneTrace(ctx.cmd(), r.backwardState, r.backwardTable, sceneSet, set, push, h.width, h.height, 1);
+            push.sphereCapacity = *h.sphereCapacity;
+            bindSceneTrace(ctx.cmd(), r.backwardState, r.backwardTable, sceneSet, set, push);
+            // Without indirect dispatch: one launch per pixel; launches past the list's length idle.
+            if (indirect) ctx.cmd().dispatchRaysIndirect(ctx.buffer(h.backwardArgs));
+            else ctx.cmd().dispatchRays(h.width * h.height, 1, 1);
         };
     });
 
@@ -72,17 +76,19 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         b.read(blas, rg::Access::AccelStructBuildRead);
         f.sphereTlas = b.write(f.sphereTlas, rg::Access::AccelStructBuild);
         CausticFrame h = f;
+        // Over the frame's capacity, not W x H: the TLAS stays allocated for W x H (any capacity fits).
         return [=](rg::PassContext& ctx) {
-            ctx.cmd().buildTopLevelFromBuffer(ctx.accelStruct(h.sphereTlas), ctx.buffer(h.instances), 0, pixels);
+            ctx.cmd().buildTopLevelFromBuffer(ctx.accelStruct(h.sphereTlas), ctx.buffer(h.instances), 0,
+                                              std::min(*h.sphereCapacity, pixels));
         };
     });
 
-    // The gather's grid is the stored-hit count (clamped to the buffer), counted on the GPU.
-    const bool indirect = res.device->capabilities().rayTracingIndirect;
+    // The gather's grid is the stored-hit count (clamped to the buffer), counted on the GPU; no launch
+    // at all when no pixel has a sphere (camera turned away from every specular object).
     rg::RgBuffer gatherGrid;
     if (indirect)
         gatherGrid = addGridFromCountPass(graph, f, "caustics.gatherGrid", kStatStoredHitAttempts,
-                                          f.in->settings.maxStoredHits);
+                                          f.in->settings.maxStoredHits, kStatSpheres);
     graph.addPass("caustics.gather", [&](rg::PassBuilder& b) {
         if (indirect) gatherGrid = b.read(gatherGrid, rg::Access::IndirectArgument);
         f.sphereTlas = b.read(f.sphereTlas, rg::Access::AccelStructTrace);
@@ -112,6 +118,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
             else cmd.dispatchRays(maxHits, 1, 1);
         };
     });
+    addSphereCountReadbackPass(graph, f);
 }
 
 }  // namespace caustics

@@ -2,6 +2,8 @@
 // Internals shared by the caustic passes (not installed): the persistent objects and the per-frame
 // graph handles that flow from one pass to the next.
 #include <array>
+#include <map>
+#include <memory>
 #include <vector>
 
 #include "caustic_filter/caustic_filter.h"
@@ -14,6 +16,14 @@ namespace caustics {
 // compare with the shaders' push blocks.
 inline constexpr uint32_t kForwardPushBytes = 32, kBackwardPushBytes = 48;
 
+// One frame slot's read-back sphere count (kStatSpheres) of the last frame recorded in it, with the
+// size of that frame; the host waited for that frame before executing a graph in the same slot.
+struct SphereCountReadback {
+    rhi::BufferHandle buffer;   // 4 bytes, Readback memory
+    uint32_t width = 0, height = 0;
+    bool recorded = false;      // a frame's copy into it was recorded
+};
+
 struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
     bool floatAtomics = true;
@@ -24,6 +34,8 @@ struct CausticResources::Impl {
     rhi::ComputePipelineHandle emitterPipeline;   // scene set + emitterLayout
     rhi::BindingLayoutHandle gridLayout;
     rhi::ComputePipelineHandle gridFromCount;     // caustic_grid_pass.cpp
+    rhi::BindingLayoutHandle specularPixelLayout;
+    rhi::ComputePipelineHandle specularPixelPipeline;   // backward_trace/specular_pixels_pass.cpp
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
     CausticFilterPipelines filter;   // resolve + filter (caustic_filter/)
@@ -31,6 +43,8 @@ struct CausticResources::Impl {
     rhi::AccelStructHandle sphereBlas;
     rhi::AccelStructHandle sphereTlas;
     uint32_t tlasCapacity = 0;
+    // Sphere counts read back per view (keyed by its history) and frame slot (backward_trace/caustics/sphere_capacity.h).
+    std::map<const void*, std::vector<SphereCountReadback>> sphereCounts;
     CausticViewHistory ownHistory;   // used when CausticFrameInputs::history is null
     // Binding sets made while recording must outlive the GPU's use: kept for framesInFlight frames.
     std::vector<std::vector<rhi::BindingSetHandle>> frameSets;
@@ -52,6 +66,10 @@ struct CausticFrame {
     uint32_t width = 0, height = 0;
     rg::RgBuffer camera, maps, radiance1, radiance2, hits, stats, spheres, instances;
     rg::RgBuffer emitters, forwardArgs;   // caustics.emitters -> caustics.forward
+    rg::RgBuffer specularPixels, backwardArgs;   // caustics.specularPixels -> caustics.backward
+    // The sphere TLAS capacity of this frame, chosen when the graph executes (caustics/sphere_capacity.h).
+    std::shared_ptr<uint32_t> sphereCapacity;
+    SphereCountReadback* sphereReadback = nullptr;   // this view's and slot's
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereTlas;
     CausticMapPlan plan;
@@ -60,15 +78,22 @@ struct CausticFrame {
 void addSetupPass(rg::RenderGraph& graph, CausticFrame& f);
 void addMapPass(rg::RenderGraph& graph, CausticFrame& f);
 void addEmitterPass(rg::RenderGraph& graph, CausticFrame& f);
-// The grid (min(stats[statSlot], cap), 1, 1) of an indirect ray dispatch, in a new 12-byte buffer.
+// The grid (min(stats[statSlot], cap), 1, 1) of an indirect ray dispatch, in a new 12-byte buffer;
+// (0, 1, 1) when stats[gateSlot] is 0.
 rg::RgBuffer addGridFromCountPass(rg::RenderGraph& graph, CausticFrame& f, const char* name, uint32_t statSlot,
-                                  uint32_t cap);
+                                  uint32_t cap, uint32_t gateSlot);
 void addForwardPass(rg::RenderGraph& graph, CausticFrame& f);
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
+void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);   // backward_trace/specular_pixels_pass.cpp
+// backward_trace/sphere_budget.cpp: the slot's read-back of the sphere count and f.sphereCapacity;
+// the capacity from it (when the graph executes); the pass that copies this frame's count.
+void prepareSphereBudget(CausticFrame& f);
+uint32_t chooseSphereCapacity(rhi::IDevice& device, const SphereCountReadback& slot, uint32_t width, uint32_t height);
+void addSphereCountReadbackPass(rg::RenderGraph& graph, CausticFrame& f);
 void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out);
 
-// Records one scene trace: the scene set (0), the pass's own set (1), push constants, the grid.
-// The forward and backward passes differ only in these arguments.
+// Binds one scene trace: the scene set (0), the pass's own set (1), push constants. The forward and
+// backward passes differ only in these arguments (and dispatch from their GPU-counted grids).
 template <typename PushConstants>
 void bindSceneTrace(rhi::ICommandList& cmd, const rhi::StateObjectHandle& state, const rhi::ShaderTableHandle& table,
                     const rhi::BindingSetHandle& sceneSet, const rhi::BindingSetHandle& passSet,
@@ -77,13 +102,6 @@ void bindSceneTrace(rhi::ICommandList& cmd, const rhi::StateObjectHandle& state,
     cmd.setBindingSet(0, sceneSet);
     cmd.setBindingSet(1, passSet);
     cmd.setPushConstants(&push, sizeof(push));
-}
-template <typename PushConstants>
-void recordSceneTrace(rhi::ICommandList& cmd, const rhi::StateObjectHandle& state, const rhi::ShaderTableHandle& table,
-                      const rhi::BindingSetHandle& sceneSet, const rhi::BindingSetHandle& passSet,
-                      const PushConstants& push, uint32_t width, uint32_t height, uint32_t depth) {
-    bindSceneTrace(cmd, state, table, sceneSet, passSet, push);
-    cmd.dispatchRays(width, height, depth);
 }
 
 }  // namespace caustics

@@ -24,6 +24,10 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
         // The forward grid (emitters, samples per texel, 1), counted up by caustics.emitters.
         f.forwardArgs = buffer("caustics.forwardArgs", 12, storage | rhi::BufferUsage::Indirect);
         const uint32_t forwardGrid[3] = {0u, uint32_t(std::ceil(f.in->settings.raysPerTexel)), 1u};
+        // The backward grid (specular pixels, 1, 1), counted up by caustics.specularPixels.
+        const bool secondType = f.in->settings.secondType && !f.plan.maps.empty();
+        if (secondType) f.backwardArgs = buffer("caustics.backwardArgs", 12, storage | rhi::BufferUsage::Indirect);
+        const uint32_t backwardGrid[3] = {0u, 1u, 1u};
         CameraConstants camera = f.in->camera;
         std::vector<CausticMapGpu> maps = f.plan.maps;
         CausticFrame h = f;
@@ -36,6 +40,7 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
             cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
             cmd.fillBuffer(ctx.buffer(h.stats), 0);
             cmd.writeBuffer(ctx.buffer(h.forwardArgs), forwardGrid, sizeof(forwardGrid));
+            if (secondType) cmd.writeBuffer(ctx.buffer(h.backwardArgs), backwardGrid, sizeof(backwardGrid));
         };
     });
 }
@@ -124,6 +129,13 @@ std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, c
         warnings.push_back(std::to_string(stats[kStatAccumulationGiveUps]) +
                            " caustic radiance contributions were dropped: the float compare-and-swap loop gave up "
                            "under contention (D3D12 float path, docs/d3d12.md); the fixed-point path never drops");
+    if (stats.size() > kStatSphereCapacity && stats[kStatSpheresDropped] > 0)
+        warnings.push_back(std::to_string(stats[kStatSpheresDropped]) +
+                           " second-type spheres dropped this frame, the sphere TLAS grows next frame: " +
+                           std::to_string(stats[kStatSpheres]) + " specular pixels reached a diffuse surface, the TLAS "
+                           "held " + std::to_string(stats[kStatSphereCapacity]) +
+                           " (sized from the sphere count of the last frame in the same frame-in-flight slot; "
+                           "docs/caustics.md, \"Second-type cost\")");
     return warnings;
 }
 

@@ -76,10 +76,12 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     CAUSTICS_TRY(m.mapLayout, makeBindingLayout(d, {{0, RO}}));
     CAUSTICS_TRY(m.emitterLayout, makeBindingLayout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
     CAUSTICS_TRY(m.forwardLayout, makeBindingLayout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW}}));
-    CAUSTICS_TRY(m.backwardLayout, makeBindingLayout(d, {{0, CB}, {1, TX}, {2, TX}, {3, RW}, {4, RW}, {5, RW}}));
+    CAUSTICS_TRY(m.backwardLayout, makeBindingLayout(d, {{0, CB}, {3, RW}, {4, RW}, {5, RW}, {6, RO}}));
     CAUSTICS_TRY(m.gatherLayout, makeBindingLayout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
     CAUSTICS_TRY(m.gridLayout, makeBindingLayout(d, {{0, RO}, {1, RW}}));
-    CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout}, 8));
+    CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout}, 12));
+    CAUSTICS_TRY(m.specularPixelLayout, makeBindingLayout(d, {{0, TX}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
+    CAUSTICS_TRY(m.specularPixelPipeline, compute(d, "backward_trace/specular_pixels.comp", {m.specularPixelLayout}, 12));
     CAUSTICS_TRY(m.filter, CausticFilterPipelines::create(d));
 
     // Gather: sphere.rint + gather.rahit over the sphere TLAS (procedural hit group).

@@ -2,8 +2,10 @@
 // The caustic passes of the paper (Komarov et al. 2021, sections 3.2-3.4) as render-graph passes:
 //   caustics.maps      raster light-space G-buffers (one texture-array layer per caustic-forming light)
 //   caustics.forward   forward trace from every specular map texel; first-type splat + hit store (3.2)
+//   caustics.specularPixels  the specular camera pixels compacted into a list (the backward grid)
 //   caustics.backward  camera rays through specular pixels to the first diffuse hit -> spheres (3.3)
-//   caustics.spheres   TLAS over the spheres (instances written by the GPU, buildTopLevelFromBuffer)
+//   caustics.spheres   TLAS over the compacted spheres (GPU-written instances, capacity from an earlier
+//                      frame's sphere count: caustics.sphereCount reads it back)
 //   caustics.gather    stored forward hits x spheres (any-hit density estimate), second type (3.3)
 //   caustics.resolve   radiance buffers -> textures
 //   caustics.temporal / caustics.atrous / caustics.history   the filter (3.4), when settings.filter
@@ -45,7 +47,14 @@ inline constexpr uint32_t kStatGatherLaunches = kStatForwardSegments + 3;
 // Radiance contributions the HLSL float compare-and-swap loop gave up on after its bounded attempts
 // (shaders/d3d12/forward_trace/radiance_atomics.hlsli; docs/d3d12.md). Always 0 on Vulkan.
 inline constexpr uint32_t kStatAccumulationGiveUps = kStatForwardSegments + 4;
-inline constexpr uint32_t kStatCount = kStatAccumulationGiveUps + 1;
+// Second-type cost (docs/caustics.md, "Second-type cost"): specular camera pixels (the backward pass's
+// launches when dispatched indirectly), launches of the backward dispatch, spheres that found no slot
+// below the sphere TLAS capacity (kStatSpheres counts them too), and that capacity (instances built).
+inline constexpr uint32_t kStatSpecularPixels = kStatForwardSegments + 5;
+inline constexpr uint32_t kStatBackwardLaunches = kStatForwardSegments + 6;
+inline constexpr uint32_t kStatSpheresDropped = kStatForwardSegments + 7;
+inline constexpr uint32_t kStatSphereCapacity = kStatForwardSegments + 8;
+inline constexpr uint32_t kStatCount = kStatSphereCapacity + 1;
 
 // One stored forward diffuse hit (std430, 80 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
 // It carries the photon's flux, its incoming direction and the receiver's glTF BRDF parameters, so a
@@ -64,14 +73,15 @@ struct CausticHit {
 };
 static_assert(sizeof(CausticHit) == 80);
 
-// One backward (second-type) integration sphere per camera pixel (std430, 64 bytes).
+// One backward (second-type) integration sphere (std430, 64 bytes), appended by caustics.backward: the
+// first min(kStatSpheres, kStatSphereCapacity) entries of CausticOutputs::spheres are valid.
 struct CausticSphere {
     glm::vec3 centre;
-    float radius;            // 0 = the pixel has no sphere
+    float radius;
     glm::vec3 transmittance; // camera-path throughput through the specular chain
     uint32_t objectId;
     glm::vec3 normal;        // unit, on the side the camera path arrived from
-    uint32_t pixel;
+    uint32_t pixel;          // the camera pixel it gathers for (y x W + x)
     glm::vec3 outgoing;      // unit, from the receiver back along the camera path (wo of the gather's BRDF)
     float pad;
 };
@@ -135,7 +145,8 @@ struct CausticOutputs {
     rg::RgBuffer secondTypeBuffer;
     rg::RgBuffer hits;          // CausticHit[maxStoredHits]
     rg::RgBuffer stats;         // uint32[kStatCount]
-    rg::RgBuffer spheres;       // CausticSphere[W x H] (invalid when the second type did not run)
+    rg::RgBuffer spheres;       // CausticSphere[W x H], the first min(kStatSpheres, kStatSphereCapacity)
+                                // valid (invalid when the second type did not run)
     rg::RgTexture mapObjectIds; // R32_UINT array, one layer per planned map (instance + 1; invalid if none)
     CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped
     bool floatAtomics = true;   // false: the buffers hold fixed-point uint (kFixedPointScale)
@@ -149,7 +160,8 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
                                         const CausticFrameInputs& inputs);
 
 // What a host should hear about a finished frame, from its read-back stats buffer (uint32[kStatCount]):
-// today, hit-buffer overflow (the second type then misses the dropped hits), naming the setting.
+// hit-buffer overflow (the second type then misses the dropped hits), naming the setting, float
+// accumulation give-ups, and second-type spheres dropped because the sphere TLAS was too small.
 std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, const CausticsSettings& settings);
 
 }  // namespace caustics

@@ -1,8 +1,9 @@
 // Backward pass (paper 3.3, Figure 5; mirror of shaders/vulkan/backward_trace/backward.rgen): from
-// every camera pixel whose G-buffer surface is specular, trace the specular chain to the first
-// diffuse hit; that hit becomes an integration sphere and this pixel's sphere TLAS instance is written
-// (unused pixels: mask 0). The pixel's ray differentials (Igehy 1999) follow the chain, so the
-// sphere's radius is the pixel's real footprint on the receiver (docs/caustics.md).
+// every camera pixel of caustics.specularPixels' list, trace the specular chain to the first diffuse
+// hit; that hit becomes an integration sphere, appended with its sphere TLAS instance at the next slot
+// of a counter (slots past the TLAS capacity are dropped and counted). The pixel's ray differentials
+// (Igehy 1999) follow the chain, so the sphere's radius is the pixel's real footprint on the receiver
+// (docs/caustics.md).
 #include "scene/scene.hlsli"
 #include "scene/camera.hlsli"
 #include "common/gather_disk.h"
@@ -10,14 +11,14 @@
 #include "common/volume.h"
 #include "forward_trace/caustic_hit.hlsli"
 #include "backward_trace/surface_derivatives.hlsli"
+#include "backward_trace/sphere_list.hlsli"
 
 struct CameraBlock { CameraConstants camera; };
 ConstantBuffer<CameraBlock> cameraBlock : register(b0, space1);
-Texture2D<uint> gObjectId : register(t1, space1);
-Texture2D<float4> gOptics : register(t2, space1);
 RWByteAddressBuffer spheres : register(u3, space1);
 RWByteAddressBuffer instances : register(u4, space1);   // caustics::rhi::InstanceDesc, 64 bytes
 RWByteAddressBuffer stats : register(u5, space1);
+ByteAddressBuffer specularPixels : register(t6, space1);
 
 struct Push {
     uint radiusPolicy;   // 0 pixel footprint, 1 fixed world radius
@@ -31,12 +32,13 @@ struct Push {
     float maxMagnification;
     float minRadius;          // metres
     float maxRadius;          // metres
-    uint pad;
+    uint sphereCapacity;      // instances of the sphere TLAS build (caustics.spheres)
 };
 ConstantBuffer<Push> pc : register(b0, space999);
 
-void writeSphere(uint pixel, float3 centre, float radius, float3 transmittance, uint objectId, float3 normal, float3 outgoing) {
-    uint o = kCausticSphereBytes * pixel;
+void writeSphere(uint slot, uint pixel, float3 centre, float radius, float3 transmittance, uint objectId, float3 normal,
+                 float3 outgoing) {
+    uint o = kCausticSphereBytes * slot;
     spheres.Store4(o, uint4(asuint(centre), asuint(radius)));
     spheres.Store4(o + 16u, uint4(asuint(transmittance), objectId));
     spheres.Store4(o + 32u, uint4(asuint(normal), pixel));
@@ -44,18 +46,13 @@ void writeSphere(uint pixel, float3 centre, float radius, float3 transmittance, 
 }
 
 // Row-major 3x4 transform (scale r, translate c), id/mask, SBT offset/flags, BLAS address.
-void writeInstance(uint pixel, float3 c, float r, uint mask) {
-    uint o = 64u * pixel;
+// The custom index is the slot, as the instance index.
+void writeInstance(uint slot, float3 c, float r) {
+    uint o = 64u * slot;
     instances.Store4(o, asuint(float4(r, 0.0f, 0.0f, c.x)));
     instances.Store4(o + 16u, asuint(float4(0.0f, r, 0.0f, c.y)));
     instances.Store4(o + 32u, asuint(float4(0.0f, 0.0f, r, c.z)));
-    instances.Store4(o + 48u, uint4((pixel & 0xFFFFFFu) | (mask << 24), 0u, pc.blasLo, pc.blasHi));
-}
-
-void writeEmpty(uint pixel) {
-    spheres.Store(kCausticSphereBytes * pixel + 12u, asuint(0.0f));   // radius 0: no sphere
-    spheres.Store(kCausticSphereBytes * pixel + 44u, pixel);
-    writeInstance(pixel, (float3)0.0f, 0.0f, 0u);     // mask 0: never hit
+    instances.Store4(o + 48u, uint4((slot & 0xFFFFFFu) | (0xFFu << 24), 0u, pc.blasLo, pc.blasHi));
 }
 
 TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
@@ -92,10 +89,12 @@ float clampRadiusAtWalls(float3 x, float3 n, float radius) {
 [shader("raygeneration")]
 void main() {
     CameraConstants camera = cameraBlock.camera;
-    uint2 p = DispatchRaysIndex().xy;
-    uint pixel = p.y * camera.frame.x + p.x;
-    uint objectId = gObjectId.Load(int3(p, 0));
-    if (objectId == 0u || gOptics.Load(int3(p, 0)).w < 0.5f) { writeEmpty(pixel); return; }
+    uint launch = DispatchRaysIndex().x;
+    if (launch == 0u) stats.InterlockedAdd(4u * kStatBackwardLaunches, DispatchRaysDimensions().x);
+    // Without indirect dispatch the grid is the list's capacity (W x H): launches past its length idle.
+    if (launch >= stats.Load(4u * kStatSpecularPixels)) return;
+    uint pixel = specularPixels.Load(4u * launch);
+    uint2 p = uint2(pixel % camera.frame.x, pixel / camera.frame.x);
 
     Rng rng = rngCreate(pixel, 0x5eedu, 1u, pc.frame);
     PinholeCamera cam = cameraPinhole(camera);
@@ -150,10 +149,15 @@ void main() {
             radius = gatherDiskRadius(rayFootprintArea(rd), pathLength * sqrt(pinholePixelArea(cam)), limits);
         }
         radius = max(clampRadiusAtWalls(x, nFacing, radius), min(pc.minRadius, radius));
-        writeSphere(pixel, x, radius, throughput, h.objectId, nFacing, -dir);
-        writeInstance(pixel, x, radius, 0xFFu);
-        stats.InterlockedAdd(4u * kStatSpheres, 1u);
+        // kStatSpheres counts every sphere, dropped or not: the host sizes later frames from it.
+        uint slot;
+        stats.InterlockedAdd(4u * kStatSpheres, 1u, slot);
+        if (slot >= pc.sphereCapacity) {
+            stats.InterlockedAdd(4u * kStatSpheresDropped, 1u);
+            return;
+        }
+        writeSphere(slot, pixel, x, radius, throughput, h.objectId, nFacing, -dir);
+        writeInstance(slot, x, radius);
         return;
     }
-    writeEmpty(pixel);
 }

@@ -38,7 +38,7 @@ vec3 causticHitReflectedFlux(CausticHit h, vec3 wo) {
     return h.flux * evalGltfBrdf(causticHitBrdf(h), h.normal, h.incoming, wo);
 }
 struct CausticSphere {
-    vec3 centre;        float radius;   // radius 0: no sphere
+    vec3 centre;        float radius;
     vec3 transmittance; uint objectId;
     vec3 normal;        uint pixel;
     vec3 outgoing;      float pad;  // unit, from the receiver back along the camera path (BRDF wo)

@@ -40,7 +40,8 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, const
 }
 
 Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::span<const scene::Camera> cameras,
-                               uint32_t width, uint32_t height, const CausticsSettings& settings) {
+                               uint32_t width, uint32_t height, const CausticsSettings& settings,
+                               uint32_t framesInFlight) {
     const uint32_t frames = uint32_t(cameras.size());
     CAUSTICS_TRY(scene::GpuScene gpuScene, scene::GpuScene::create(device, scene));
     CAUSTICS_TRY(SceneBindings bindings, SceneBindings::create(device, gpuScene, scene));
@@ -53,7 +54,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
     CAUSTICS_TRY(BindingSetHandle cameraSet,
                  device.createBindingSet(BindingSetDesc().add(BindingSetItem::constantBuffer(0, cameraBuffer)), cameraLayout));
     CAUSTICS_TRY(GBufferPass gbufferPass, GBufferPass::create(device, bindings.layout, cameraLayout));
-    CAUSTICS_TRY(CausticResources resources, CausticResources::create(device));
+    CAUSTICS_TRY(CausticResources resources, CausticResources::create(device, framesInFlight));
 
     CausticRun run;
     run.width = width;
@@ -138,7 +139,9 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         run.stats = fetch<uint32_t>(device, rbStats, kStatCount);
         if (out.hits.valid())
             run.hits = fetch<CausticHit>(device, rbHits, std::min<uint64_t>(run.stats[kStatStoredHitAttempts], settings.maxStoredHits));
-        if (out.spheres.valid()) run.spheres = fetch<CausticSphere>(device, rbSpheres, pixels);
+        // The backward pass appends: the first min(spheres, capacity) entries are this frame's.
+        if (out.spheres.valid())
+            run.spheres = fetch<CausticSphere>(device, rbSpheres, std::min(run.stats[kStatSpheres], run.stats[kStatSphereCapacity]));
         run.plan = out.plan;
     }
     CAUSTICS_CHECK(device.waitIdle());

@@ -18,7 +18,7 @@ struct CausticRun {
     std::vector<glm::vec3> firstType, secondType, radiance;   // row 0 = top
     std::vector<uint32_t> stats;                             // kStatCount words
     std::vector<CausticHit> hits;                            // min(attempts, maxStoredHits)
-    std::vector<CausticSphere> spheres;                      // one per pixel (secondType on)
+    std::vector<CausticSphere> spheres;                      // the frame's spheres, in append order (secondType on)
     std::vector<float> linearDepth;
     std::vector<uint32_t> objectId;
     CausticMapPlan plan;
@@ -30,9 +30,11 @@ struct CausticRun {
 // frames > 1 runs the graph repeatedly (frame index 0..frames-1) and returns the last frame.
 Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, const scene::Camera& camera,
                                uint32_t width, uint32_t height, const CausticsSettings& settings, uint32_t frames = 1);
-// One frame per camera (a moving view; each frame's prevViewProj is the camera before it).
+// One frame per camera (a moving view; each frame's prevViewProj is the camera before it), on
+// CausticResources made for `framesInFlight` frame slots (frame n reuses slot n % framesInFlight).
 Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, std::span<const scene::Camera> cameras,
-                               uint32_t width, uint32_t height, const CausticsSettings& settings);
+                               uint32_t width, uint32_t height, const CausticsSettings& settings,
+                               uint32_t framesInFlight = 3);
 
 // Sum of `images` over several independent frames (different seeds) divided by their count.
 }  // namespace caustics::test

@@ -42,6 +42,25 @@ TEST(AccumulationGiveUps, StatsSlotsOfHlslAndGlslEqualTheCppSlots) {
     expectSlotsMatchCpp(statSlots(text.str()), "caustic_hit.glsl");
 }
 
+// The second type's cost slots (caustic_passes.h) as the backward shaders declare them.
+TEST(AccumulationGiveUps, SecondTypeCostSlotsOfHlslAndGlslEqualTheCppSlots) {
+    const std::map<std::string, uint32_t> cpp = {{"kStatSpecularPixels", kStatSpecularPixels},
+                                                 {"kStatBackwardLaunches", kStatBackwardLaunches},
+                                                 {"kStatSpheresDropped", kStatSpheresDropped},
+                                                 {"kStatSphereCapacity", kStatSphereCapacity}};
+    std::ifstream glsl(std::string(CAUSTICS_SOURCE_DIR) + "/shaders/vulkan/backward_trace/sphere_list.glsl");
+    std::ostringstream text;
+    text << glsl.rdbuf();
+    for (const auto& [where, slots] :
+         {std::pair{std::string("backward.rgen.hlsl"), statSlots(std::string(hlsl::source("backward_trace/backward.rgen")))},
+          std::pair{std::string("sphere_list.glsl"), statSlots(text.str())}})
+        for (const auto& [name, value] : cpp) {
+            auto it = slots.find(name);
+            ASSERT_NE(it, slots.end()) << where << " does not declare " << name;
+            EXPECT_EQ(it->second, value) << where << ": " << name << " differs from caustic_passes.h";
+        }
+}
+
 TEST(AccumulationGiveUps, FloatCompareExchangeLoopCountsEachGiveUp) {
     // Both users of the float loop: the forward splat and the gather's any-hit.
     for (const char* name : {"forward_trace/forward.rgen", "backward_trace/gather.rahit"}) {

@@ -1,0 +1,50 @@
+// caustics.specularPixels: compacts the camera pixels whose surface is specular into a list and counts
+// the backward grid up (shaders/*/backward_trace/specular_pixels.*), so that caustics.backward launches
+// once per specular pixel, as caustics.forward launches once per emitting texel (docs/caustics.md,
+// "Second-type cost"). It also chooses the frame's sphere TLAS capacity (caustics/sphere_capacity.h) and zeroes
+// the instance slots below it: the ones the backward pass leaves unwritten stay inactive (a zero
+// acceleration-structure reference is an inactive instance in Vulkan and DXR).
+#include "caustic_maps/caustic_internal.h"
+
+namespace caustics {
+
+void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
+    const uint64_t pixels = uint64_t(f.width) * f.height;
+    graph.addPass("caustics.specularPixels", [&](rg::PassBuilder& b) {
+        rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
+        rg::RgTexture optics = b.read(f.in->gbuffer.optics, rg::Access::SampledRead);
+        f.specularPixels = b.write(b.createBuffer("caustics.specularPixels", rhi::BufferDesc().setByteSize(pixels * 4)
+                                                                                  .setUsage(rhi::BufferUsage::Storage)
+                                                                                  .setDebugName("caustics.specularPixels")),
+                                   rg::Access::StorageWrite);
+        f.backwardArgs = b.write(f.backwardArgs, rg::Access::StorageReadWrite);
+        f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
+        f.instances = b.write(b.createBuffer("caustics.sphereInstances",
+                                             rhi::BufferDesc().setByteSize(pixels * sizeof(rhi::InstanceDesc))
+                                                 .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::AccelStructInput)
+                                                 .setDebugName("caustics.sphereInstances")),
+                              rg::Access::CopyDest);
+        CausticFrame h = f;
+        return [=](rg::PassContext& ctx) {
+            CausticResources::Impl& r = *h.res;
+            *h.sphereCapacity = chooseSphereCapacity(*ctx.device(), *h.sphereReadback, h.width, h.height);
+            rhi::ICommandList& cmd = ctx.cmd();
+            cmd.fillBuffer(ctx.buffer(h.instances), 0, 0, uint64_t(*h.sphereCapacity) * sizeof(rhi::InstanceDesc));
+            rhi::BindingSetDesc d;
+            d.add(rhi::BindingSetItem::sampledTexture(0, ctx.texture(objectId)))
+                .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(optics)))
+                .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(h.specularPixels)))
+                .add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(h.backwardArgs)))
+                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.stats)));
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.specularPixelLayout, d);
+            if (!set) return;
+            const uint32_t push[3] = {h.width, h.height, *h.sphereCapacity};
+            cmd.setComputePipeline(r.specularPixelPipeline);
+            cmd.setBindingSet(0, set);
+            cmd.setPushConstants(push, sizeof(push));
+            cmd.dispatch((h.width + 7) / 8, (h.height + 7) / 8, 1);
+        };
+    });
+}
+
+}  // namespace caustics

@@ -1,0 +1,61 @@
+// The sphere TLAS capacity (caustics/sphere_capacity.h): the policy, the per-slot read-back of the sphere count
+// and the pass that copies it (caustics.sphereCount).
+#include "caustics/sphere_capacity.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "caustic_maps/caustic_internal.h"
+
+namespace caustics {
+
+uint32_t sphereTlasCapacity(std::optional<uint32_t> earlierCount, uint32_t pixels) {
+    if (!earlierCount) return pixels;
+    const uint64_t wanted = uint64_t(std::ceil(double(*earlierCount) * kSphereCapacityHeadroom));
+    const uint64_t bucket = std::max<uint64_t>(std::bit_ceil(std::max<uint64_t>(wanted, 1)) / 8, 1);
+    const uint64_t rounded = (wanted + bucket - 1) / bucket * bucket;
+    return uint32_t(std::min<uint64_t>(std::max<uint64_t>(rounded, kMinSphereCapacity), pixels));
+}
+
+void prepareSphereBudget(CausticFrame& f) {
+    std::vector<SphereCountReadback>& slots = f.res->sphereCounts[f.history];
+    slots.resize(f.res->frameSets.size());
+    SphereCountReadback& slot = slots[f.res->frameSlot];
+    if (!slot.buffer) {
+        auto buffer = f.res->device->createBuffer(rhi::BufferDesc().setByteSize(4).setUsage(rhi::BufferUsage::CopyDest)
+                                                      .setMemory(rhi::MemoryType::Readback)
+                                                      .setDebugName("caustics.sphereCountReadback"));
+        if (buffer) slot.buffer = buffer.value();   // without it every frame builds over W x H
+    }
+    f.sphereReadback = &slot;
+    f.sphereCapacity = std::make_shared<uint32_t>(f.width * f.height);
+}
+
+uint32_t chooseSphereCapacity(rhi::IDevice& device, const SphereCountReadback& slot, uint32_t width, uint32_t height) {
+    std::optional<uint32_t> earlier;
+    uint32_t count = 0;
+    if (slot.buffer && slot.recorded && slot.width == width && slot.height == height &&
+        device.readBuffer(slot.buffer, &count, sizeof(count)))
+        earlier = count;
+    return sphereTlasCapacity(earlier, width * height);
+}
+
+void addSphereCountReadbackPass(rg::RenderGraph& graph, CausticFrame& f) {
+    graph.addPass("caustics.sphereCount", [&](rg::PassBuilder& b) {
+        f.stats = b.read(f.stats, rg::Access::CopySource);
+        b.setSideEffects();   // writes a host-visible buffer the graph does not track
+        rg::RgBuffer stats = f.stats;
+        SphereCountReadback* readback = f.sphereReadback;
+        const uint32_t width = f.width, height = f.height;
+        return [=](rg::PassContext& ctx) {
+            if (!readback->buffer) return;
+            ctx.cmd().copyBuffer(readback->buffer, 0, ctx.buffer(stats), uint64_t(kStatSpheres) * 4, 4);
+            readback->width = width;
+            readback->height = height;
+            readback->recorded = true;
+        };
+    });
+}
+
+}  // namespace caustics
