@@ -50,7 +50,11 @@ Result<Measurement> measure(const rhi::DeviceHandle& device, BenchSession& sessi
     m.emitterTexels = s[kStatEmitterTexels];
     m.dispatchedTexels = s[kStatDispatchedTexels];
     m.segments = s[kStatForwardSegments];
+    m.specularPixels = s[kStatSpecularPixels];
+    m.backwardLaunches = s[kStatBackwardLaunches];
     m.spheres = s[kStatSpheres];
+    m.sphereCapacity = s[kStatSphereCapacity];
+    m.spheresDropped = s[kStatSpheresDropped];
     m.hitAttempts = s[kStatStoredHitAttempts];
     m.storedHits = std::min<uint64_t>(m.hitAttempts, settings.maxStoredHits);
     m.gatherPairs = s[kStatGatherHits];

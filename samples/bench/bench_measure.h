@@ -24,7 +24,11 @@ struct Measurement {
     uint64_t emitterTexels = 0;             // map texels that emit (specular 3x3 neighbourhood)
     uint64_t dispatchedTexels = 0;          // map texels the forward dispatch covers
     uint64_t segments = 0;                  // forward ray segments traced (traceRay calls)
+    uint64_t specularPixels = 0;            // camera pixels on a specular surface (caustics.specularPixels)
+    uint64_t backwardLaunches = 0;          // launches of caustics.backward (= specular pixels when indirect)
     uint64_t spheres = 0;                   // second-type spheres (specular camera pixels with a diffuse hit)
+    uint64_t sphereCapacity = 0;            // instances the sphere TLAS was built over (caustics/sphere_capacity.h)
+    uint64_t spheresDropped = 0;            // spheres past that capacity (0 unless the view changed fast)
     uint64_t storedHits = 0;                // forward diffuse hits kept
     uint64_t hitAttempts = 0;               // forward diffuse hits offered (> kept: overflow)
     uint64_t gatherPairs = 0;

@@ -1,7 +1,9 @@
 // `sweep` mode: the paper's section-4 measurements (Figures 9, 11, 13) and more, as CSV under --out:
 //   timings.csv  one row per run: frame and per-pass medians and the caustic counters, varying
 //                lights (extra ring lights 0..8, camera on the caustics and turned away: Figure 9),
-//                rays per texel (Figure 11), depth (Figure 13), map size and image size
+//                rays per texel (Figure 11), depth (Figure 13), map size and image size; backward_ms
+//                includes caustics.specularPixels and spheres_ms caustics.sphereCount (gather_ms already
+//                includes caustics.gatherGrid)
 //   memory.csv   every caustic transient of each run and its size
 //   quality.csv  relative L1 of the caustic image against a converged reference (16 rays per texel x
 //                --reference-frames frames, unfiltered) next to the time, filter off and on
@@ -36,7 +38,7 @@ public:
         timings_ << "sweep,value,view,scene,width,height,lights,maps,map_size,rays_per_texel,depth,filter,frame_ms,"
                     "caustics_ms,maps_ms,emitters_ms,forward_ms,backward_ms,spheres_ms,gather_ms,filter_ms,photons,"
                     "texels_emitting,texels_dispatched,segments,spheres,stored_hits,hits_offered,overflow,"
-                    "transient_bytes,transient_heap_bytes\n";
+                    "transient_bytes,transient_heap_bytes,specular_pixels,backward_launches,sphere_capacity,spheres_dropped\n";
         memory_ << "sweep,value,view,resource,bytes\n";
         quality_ << "sweep,value,rays_per_texel,depth,filter,caustics_ms,frame_ms,relative_l1\n";
     }
@@ -56,12 +58,15 @@ public:
                  << r.height << ',' << sc.lights.size() << ',' << m.maps << ',' << s.mapResolution << ','
                  << s.raysPerTexel << ',' << s.maxSpecularDepth << ',' << (s.filter ? "on" : "off") << ',' << m.frameMs
                  << ',' << m.causticsMs << ',' << m.passTime("caustics.maps") << ',' << m.passTime("caustics.emitters")
-                 << ',' << m.passTime("caustics.forward") << ',' << m.passTime("caustics.backward") << ','
-                 << m.passTime("caustics.spheres") << ',' << m.passTime("caustics.gather") << ','
+                 << ',' << m.passTime("caustics.forward") << ','
+                 << m.passTime("caustics.backward") + m.passTime("caustics.specularPixels") << ','
+                 << m.passTime("caustics.spheres") + m.passTime("caustics.sphereCount") << ','
+                 << m.passTime("caustics.gather") << ','
                  << m.passTime("caustics.temporal") + m.passTime("caustics.atrous") + m.passTime("caustics.history")
                  << ',' << m.photons << ',' << m.emitterTexels << ',' << m.dispatchedTexels << ',' << m.segments << ','
                  << m.spheres << ',' << m.storedHits << ',' << m.hitAttempts << ',' << (m.hitAttempts > m.storedHits)
-                 << ',' << transientBytes << ',' << m.transientHeapBytes << '\n';
+                 << ',' << transientBytes << ',' << m.transientHeapBytes << ',' << m.specularPixels << ','
+                 << m.backwardLaunches << ',' << m.sphereCapacity << ',' << m.spheresDropped << '\n';
         if (r.reference)
             quality_ << r.sweep << ',' << r.value << ',' << s.raysPerTexel << ',' << s.maxSpecularDepth << ','
                      << (s.filter ? "on" : "off") << ',' << m.causticsMs << ',' << m.frameMs << ','
