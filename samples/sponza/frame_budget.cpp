@@ -1,20 +1,22 @@
 #include "frame_budget.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "caustics/caustic_passes.h"
+#include "caustics/render_graph/memory_sizer.h"
+#include "camera_setup.h"
 
 namespace caustics::sample {
 namespace {
 
-// Per pixel, what a frame keeps alive at once (formats from caustics/gbuffer.h and the passes):
-constexpr uint64_t kGBufferBytes = 4 + 8 + 4 + 8 + 4 + 4;   // depth, normal, albedo, optics, linear depth, id
-constexpr uint64_t kDirectBytes = 8;                         // RGBA16F
-constexpr uint64_t kCompositeBytes = 4 + 16;                 // display RGBA8 + hdr RGBA32F
-constexpr uint64_t kReadbackBytes = 4 + 16;                  // the sample's host copies of both
-constexpr uint64_t kCausticBytes = 12 + 12 + 16 + 16 + 16;   // radiance buffers (RGB) + three RGBA32F textures
-constexpr uint64_t kHdrReadbackBytes = 16;                   // the largest single allocation the sample makes
+constexpr uint64_t kHdrReadbackBytesPerPixel = 16;   // RGBA32F: the largest single allocation the sample makes
+// The second-type sphere TLAS holds one instance per pixel; the RHI cannot size an acceleration
+// structure without creating it, so only its instance descriptors (64 bytes each) are counted.
+constexpr uint64_t kSphereInstanceBytes = 64;
 
 std::string gib(uint64_t bytes) {
     char text[32];
@@ -22,31 +24,116 @@ std::string gib(uint64_t bytes) {
     return text;
 }
 
-}  // namespace
+struct GraphMemory {
+    uint64_t heap = 0;
+    std::vector<std::pair<std::string, uint64_t>> transients;   // heap-placed resources, name and bytes
+};
 
-uint64_t estimateFrameBytes(uint32_t width, uint32_t height, const CausticsSettings& settings) {
-    uint64_t perPixel = kGBufferBytes + kDirectBytes + kCompositeBytes + kReadbackBytes;
-    if (settings.causticsEnabled) perPixel += kCausticBytes;
-    if (settings.causticsEnabled && settings.secondType) perPixel += sizeof(CausticSphere);
-    return perPixel * width * height;
+// The module's frame graph at width x height, built and compiled against the device's memory
+// requirements; never executed.
+Result<GraphMemory> frameGraphMemory(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
+    rg::RenderGraph graph;
+    FrameInputs in;
+    in.camera = cameraViewMatrices(scene::Camera{}, width, height);
+    in.width = width;
+    in.height = height;
+    CAUSTICS_TRY(FrameOutputs out, module.addPasses(graph, in));
+    graph.markOutput(out.display, rhi::ResourceState::CopySource);
+    graph.markOutput(out.hdr, rhi::ResourceState::CopySource);
+    CAUSTICS_CHECK(graph.compile(rg::DeviceMemorySizer(device)));
+    const rg::CompiledPlan& plan = *graph.plan();
+    GraphMemory m;
+    m.heap = plan.heapSize;
+    for (size_t i = 0; i < graph.desc().resources.size(); ++i) {
+        if (!plan.heapOffset[i]) continue;
+        const rg::ResourceDecl& r = graph.desc().resources[i];
+        bool buffer = r.kind == rg::ResourceKind::Buffer;
+        uint64_t bytes = buffer ? device.memoryRequirements(plan.bufferDescs[i]).size
+                                : device.memoryRequirements(plan.textureDescs[i]).size;
+        // The device sizes a resource by creating it unbound; one it refuses comes back as 0 bytes.
+        if (bytes == 0)
+            return makeError("frame memory: with these settings the device cannot create the render graph's " +
+                             std::string(buffer ? "buffer '" : "texture '") + r.name + "'" +
+                             (buffer ? " of " + gib(plan.bufferDescs[i].byteSize) : std::string()) + " (" +
+                             device.capabilities().adapterName + ")");
+        m.transients.emplace_back(r.name, bytes);
+    }
+    return m;
 }
 
-Status checkFrameFitsDevice(const rhi::Capabilities& caps, uint32_t width, uint32_t height,
-                            const CausticsSettings& settings) {
+}  // namespace
+
+Status checkFrameSize(const rhi::Capabilities& caps, uint32_t width, uint32_t height) {
     std::string size = std::to_string(width) + "x" + std::to_string(height);
     if (caps.maxTextureDimension2D && (width > caps.maxTextureDimension2D || height > caps.maxTextureDimension2D))
         return makeError("--width/--height: " + size + " exceeds the device's largest texture side " +
                          std::to_string(caps.maxTextureDimension2D) + " (" + caps.adapterName + ")");
-    uint64_t readback = kHdrReadbackBytes * width * height;
+    uint64_t readback = kHdrReadbackBytesPerPixel * width * height;
     if (caps.maxAllocationBytes && readback > caps.maxAllocationBytes)
         return makeError("--width/--height: " + size + " needs a " + gib(readback) +
                          " read-back buffer, more than the device's largest allocation " +
                          gib(caps.maxAllocationBytes) + " (" + caps.adapterName + ")");
-    uint64_t frame = estimateFrameBytes(width, height, settings);
-    if (caps.deviceMemoryBytes && frame > caps.deviceMemoryBytes)
-        return makeError("--width/--height: " + size + " needs at least " + gib(frame) + " of device memory, more than the " +
-                         gib(caps.deviceMemoryBytes) + " the device has (" + caps.adapterName + ")");
     return okStatus();
+}
+
+uint64_t FrameMemory::persistentBytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const {
+    auto texture = [&](rhi::Format f) { return device.memoryRequirements(rhi::TextureDesc().setSize(width, height).setFormat(f)).size; };
+    auto readback = [&](uint64_t bytesPerPixel) {
+        return device.memoryRequirements(rhi::BufferDesc().setByteSize(bytesPerPixel * width * height)
+                                             .setUsage(rhi::BufferUsage::CopyDest).setMemory(rhi::MemoryType::Readback)).size;
+    };
+    uint64_t bytes = readback(4) + readback(kHdrReadbackBytesPerPixel);   // the sample's display and HDR copies
+    if (s.causticsEnabled && s.filter)   // the view's filter history (caustic_resources.cpp ensureHistory)
+        bytes += 2 * texture(rhi::Format::RGBA32_FLOAT) + texture(rhi::Format::R32_FLOAT) +
+                 texture(rhi::Format::RGBA16_FLOAT) + texture(rhi::Format::R32_UINT);
+    if (s.causticsEnabled && s.secondType) bytes += kSphereInstanceBytes * width * height;
+    return bytes;
+}
+
+uint64_t FrameMemory::heapBytes(uint32_t width, uint32_t height) const {
+    return uint64_t(std::ceil(double(fixedBytes) + heapBytesPerPixel * double(width) * double(height)));
+}
+
+uint64_t FrameMemory::bytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const {
+    return heapBytes(width, height) + persistentBytes(device, width, height, s);
+}
+
+Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& module) {
+    constexpr uint32_t kSmall[2][2] = {{64, 48}, {128, 96}};
+    GraphMemory graph[2];
+    for (int i = 0; i < 2; ++i) {
+        CAUSTICS_TRY(graph[i], frameGraphMemory(device, module, kSmall[i][0], kSmall[i][1]));
+    }
+    double pixels0 = double(kSmall[0][0]) * kSmall[0][1], pixels1 = double(kSmall[1][0]) * kSmall[1][1];
+    FrameMemory m;
+    m.heapBytesPerPixel = std::max(0.0, (double(graph[1].heap) - double(graph[0].heap)) / (pixels1 - pixels0));
+    m.fixedBytes = uint64_t(std::max(0.0, double(graph[0].heap) - m.heapBytesPerPixel * pixels0));
+    for (const auto& [name, bytes] : graph[1].transients)
+        for (const auto& [smallName, smallBytes] : graph[0].transients)
+            if (name == smallName && bytes == smallBytes && bytes > m.largestFixedBytes) {
+                m.largestFixed = name;
+                m.largestFixedBytes = bytes;
+            }
+    return m;
+}
+
+Result<FrameMemory> checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
+    const rhi::Capabilities& caps = device.capabilities();
+    CAUSTICS_CHECK(checkFrameSize(caps, width, height));
+    CAUSTICS_TRY(FrameMemory memory, measureFrameMemory(device, module));
+    std::string size = std::to_string(width) + "x" + std::to_string(height);
+    uint64_t heap = memory.heapBytes(width, height);
+    if (caps.maxAllocationBytes && heap > caps.maxAllocationBytes)
+        return makeError("frame memory: " + size + " with these settings needs a " + gib(heap) + " render-graph transient heap (one allocation; " +
+                         "largest fixed part: " + memory.largestFixed + " " + gib(memory.largestFixedBytes) +
+                         "), more than the device's largest allocation " + gib(caps.maxAllocationBytes) + " (" +
+                         caps.adapterName + ")");
+    uint64_t frame = memory.bytes(device, width, height, module.settings());
+    if (caps.deviceMemoryBytes && frame > caps.deviceMemoryBytes)
+        return makeError("--width/--height: " + size + " needs " +
+                         gib(frame) + " of device memory (measured from the frame's render graph), more than the " +
+                         gib(caps.deviceMemoryBytes) + " the device has (" + caps.adapterName + ")");
+    return memory;
 }
 
 }  // namespace caustics::sample

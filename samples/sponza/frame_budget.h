@@ -1,19 +1,38 @@
 #pragma once
-// Checks an image size against the device's limits before anything is allocated, so that
+// Checks an image size against the device before the frame's resources are allocated, so that
 // `--width 16384 --height 16384` is refused with the limit named instead of failing deep in an
-// allocation after the scene has been uploaded.
+// allocation. The memory a frame needs is measured from the module's own render graph, not guessed.
 #include <cstdint>
+#include <string>
 
-#include "caustics/caustics_settings.h"
+#include "caustics/caustics_module.h"
 #include "caustics/rhi/device.h"
 
 namespace caustics::sample {
 
-// Lower bound of the device memory one frame of W x H needs (bytes), from the per-pixel resources
-// the module and the sample allocate (docs/viewer.md lists them).
-uint64_t estimateFrameBytes(uint32_t width, uint32_t height, const CausticsSettings& settings);
+// The texture side and the largest single allocation (the sample's HDR read-back): no module needed.
+Status checkFrameSize(const rhi::Capabilities& caps, uint32_t width, uint32_t height);
 
-Status checkFrameFitsDevice(const rhi::Capabilities& caps, uint32_t width, uint32_t height,
-                            const CausticsSettings& settings);
+// Device memory of one frame as a function of its pixel count, for the module's current settings.
+struct FrameMemory {
+    uint64_t fixedBytes = 0;          // transient heap at zero pixels: caustic maps, hit buffer, ...
+    double heapBytesPerPixel = 0.0;   // transient heap growth per pixel: G-buffer, direct, caustic images, ...
+    std::string largestFixed;         // the largest transient whose size does not depend on the pixels
+    uint64_t largestFixedBytes = 0;   // (the hit buffer: CausticsSettings::maxStoredHits x 80 bytes)
+    uint64_t heapBytes(uint32_t width, uint32_t height) const;
+    // Per frame size, from the device's memory requirements of the persistent and read-back resources.
+    uint64_t persistentBytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const;
+    uint64_t bytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const;
+};
+
+// Builds the module's frame graph at two small sizes (built and compiled against the device's memory
+// requirements, never executed: the module commits nothing) and fits the transient heap's size, which
+// the graph's aliasing makes linear in the pixel count (docs/viewer.md "Device limits").
+Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& module);
+
+// checkFrameSize, then the measured frame: the transient heap (one allocation) against the largest
+// allocation, and the whole frame against the device-local heap. Errors name the size and the limit.
+// Returns the measurement.
+Result<FrameMemory> checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height);
 
 }  // namespace caustics::sample

@@ -155,7 +155,7 @@ int run(const sample::CliOptions& o) {
     }
     std::printf("device: %s (%s)\n", (*device)->capabilities().adapterName.c_str(),
                 (*device)->capabilities().driverName.c_str());
-    if (Status st = sample::checkFrameFitsDevice((*device)->capabilities(), o.width, o.height, settingsFromOptions(o)); !st) {
+    if (Status st = sample::checkFrameSize((*device)->capabilities(), o.width, o.height); !st) {
         std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
         return 1;
     }
@@ -169,6 +169,14 @@ int run(const sample::CliOptions& o) {
         std::fprintf(stderr, "caustics-sponza: %s\n", module.message().c_str());
         return 1;
     }
+    auto memory = sample::checkFrameFitsDevice(**device, **module, o.width, o.height);
+    if (!memory) {
+        std::fprintf(stderr, "caustics-sponza: %s\n", memory.message().c_str());
+        return 1;
+    }
+    std::printf("frame memory: %.1f MiB for %ux%u (render-graph transient heap %.1f MiB + %.0f bytes/pixel, measured)\n",
+                double(memory->bytes(**device, o.width, o.height, (*module)->settings())) / 1048576.0, o.width, o.height,
+                double(memory->fixedBytes) / 1048576.0, memory->heapBytesPerPixel);
     if (o.window) return sample::runViewer(*device, scene, *gpuScene, *module, o, script);
 
     auto renderer = sample::FrameRenderer::create(*device, **module, o.width, o.height);
