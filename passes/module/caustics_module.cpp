@@ -23,6 +23,7 @@ struct CausticsModule::Impl {
     rhi::BindingLayoutHandle cameraLayout;
     std::unique_ptr<CausticsView> defaultView;
     std::optional<GBufferPass> gbuffer;
+    std::optional<ObjectIdRemapPass> objectIdRemap;
     std::optional<DirectLightingPass> direct;
     std::optional<CompositePass> composite;
     CausticResources caustics;
@@ -52,6 +53,7 @@ Result<std::unique_ptr<CausticsModule>> CausticsModule::create(rhi::DeviceHandle
     CAUSTICS_TRY(impl->cameraLayout, dev.createBindingLayout(cameraLayout));
     const rhi::BindingLayoutHandle& sceneLayout = impl->liveScene->layout();
     CAUSTICS_TRY(impl->gbuffer, GBufferPass::create(dev, sceneLayout, impl->cameraLayout));
+    CAUSTICS_TRY(impl->objectIdRemap, ObjectIdRemapPass::create(dev));
     CAUSTICS_TRY(impl->direct, DirectLightingPass::create(dev, sceneLayout, impl->cameraLayout));
     CAUSTICS_TRY(impl->composite, CompositePass::create(dev));
     auto module = std::unique_ptr<CausticsModule>(new CausticsModule(std::move(impl)));
@@ -125,7 +127,8 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
 
     FrameOutputs out;
     if (in.hostGBuffer) {
-        CAUSTICS_TRY(out.gbuffer, importHostGBuffer(graph, *in.hostGBuffer, in.width, in.height, m.settings));
+        CAUSTICS_TRY(out.gbuffer, importHostGBuffer(graph, *in.hostGBuffer, in.width, in.height, m.settings,
+                                                        *m.objectIdRemap));
     } else {
         out.gbuffer = m.gbuffer->addToGraph(graph, frame);
     }

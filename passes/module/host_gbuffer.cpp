@@ -13,8 +13,32 @@ HostGBufferRequirements hostGBufferRequirements(const CausticsSettings& settings
     return r;
 }
 
+namespace {
+
+// The map must hold objectIdMapCount pairs and be bindable as a storage buffer.
+Status checkObjectIdMap(const HostGBuffer& h) {
+    const std::string what = "CausticsModule::addPasses: hostGBuffer.objectIdMap";
+    if (!h.objectIdMap) {
+        if (h.objectIdMapCount == 0) return okStatus();
+        return makeError(what + " is missing but objectIdMapCount is " + std::to_string(h.objectIdMapCount));
+    }
+    const rhi::BufferDesc& d = h.objectIdMap->desc();
+    const std::string label = d.debugName.empty() ? std::string() : " ('" + d.debugName + "')";
+    if (h.objectIdMapCount == 0) return makeError(what + label + " is given with objectIdMapCount 0");
+    if (d.byteSize < uint64_t(h.objectIdMapCount) * 8)
+        return makeError(what + label + " holds " + std::to_string(d.byteSize / 8) + " (hostId, moduleId) pairs (" +
+                         std::to_string(d.byteSize) + " bytes); objectIdMapCount is " +
+                         std::to_string(h.objectIdMapCount));
+    if (!rhi::hasAny(d.usage, rhi::BufferUsage::Storage))
+        return makeError(what + label + " lacks Storage usage: the id pass reads it as a storage buffer");
+    return okStatus();
+}
+
+}  // namespace
+
 Result<GBuffer> importHostGBuffer(rg::RenderGraph& graph, const HostGBuffer& h, uint32_t width, uint32_t height,
-                                  const CausticsSettings& settings) {
+                                  const CausticsSettings& settings, const ObjectIdRemapPass& remap) {
+    CAUSTICS_CHECK(checkObjectIdMap(h));
     const HostGBufferRequirements need = hostGBufferRequirements(settings);
     GBuffer g;
     g.width = width;
@@ -47,6 +71,11 @@ Result<GBuffer> importHostGBuffer(rg::RenderGraph& graph, const HostGBuffer& h, 
     CAUSTICS_CHECK(import(h.albedoMetallic, "albedoMetallic", GBufferFormats::kAlbedoMetallic, need.albedoMetallic,
                           g.albedoMetallic));
     // depth is not imported: nothing reads it, and an unread import would only add barriers.
+    if (h.objectIdMap) {
+        rg::RgBuffer map = graph.importBuffer("host.objectIdMap", h.objectIdMap, rhi::ResourceState::ShaderResource,
+                                              rhi::ResourceState::ShaderResource);
+        g.objectId = remap.addToGraph(graph, g.objectId, map, h.objectIdMapCount, width, height);
+    }
     return g;
 }
 

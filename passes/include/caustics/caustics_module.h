@@ -10,7 +10,8 @@
 //   graph.execute(*device, *cmd);  ...submit...; graph.texture(out->display) is the image
 //   graph.passTimeMs("direct_lighting")           // per-pass GPU medians come from the graph
 //
-// Pass names: view.begin, scene.update, gbuffer, direct_lighting, caustics.* (caustic_passes.h),
+// Pass names: view.begin, scene.update, gbuffer (or gbuffer.object_ids for a host G-buffer with an id
+// map), direct_lighting, caustics.* (caustic_passes.h),
 // composite. The scene is read every frame: instances, lights and materials may change between
 // frames (live_scene.h). A host G-buffer (caustics/gbuffer.h contract) replaces our G-buffer pass; a
 // host output target (RGBA8_UNORM with Storage usage) receives the display image instead of a

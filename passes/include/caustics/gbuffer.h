@@ -14,7 +14,8 @@
 //   linearDepth      R32_FLOAT     view-space distance along the camera axis (metres); 0 = background
 //   objectId         R32_UINT      instance index + 1; 0 = background. "Instance index" is the
 //                                  instance's position in scene::Scene::instances, which is also its
-//                                  TLAS instance id and its row in the instance table (live_scene.h)
+//                                  TLAS instance id and its row in the instance table (live_scene.h).
+//                                  A host G-buffer may hold its own ids instead, with HostGBuffer::objectIdMap
 //
 // optics.x = metallic + (1 - metallic) * specular * F0(ior)   (normal-incidence reflectance; glTF
 //            metallic-roughness + KHR_materials_specular; F0 = ((ior-1)/(ior+1))^2)
@@ -60,6 +61,12 @@ struct HostGBuffer {
     rhi::TextureHandle depth, normalRoughness, albedoMetallic, optics, linearDepth, objectId;
     // The state the host leaves them in before the graph runs and wants them in afterwards.
     rhi::ResourceState state = rhi::ResourceState::ShaderResource;
+    // Optional: objectId holds the host's own ids. objectIdMapCount (hostId, moduleId) pairs of uint32,
+    // sorted by hostId (ascending, unique), moduleId = instance index + 1; a host id the map does not
+    // list reads as 0 (background). Storage usage, shader-readable when the graph runs. The module maps
+    // every pixel on the GPU (pass gbuffer.object_ids) into its own texture; the host's is only read.
+    rhi::BufferHandle objectIdMap;
+    uint32_t objectIdMapCount = 0;
 };
 
 // Which channels the passes of a configuration read (true = the host must supply it):

@@ -1,6 +1,8 @@
 #include "host_engine.h"
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <iterator>
 
 #include "caustics/rhi/vulkan_interop.h"
@@ -105,13 +107,31 @@ struct HostResources {
     HostRayTracingScene rayTracing;
     RawImage output;
     RawBuffer readback, idBack, depthBack;
+    RawBuffer objectIdMap;   // (hostId, moduleId) pairs, sorted by hostId
 };
+
+// The host's id of instance row k is kSparseIdBase + kSparseIdStride * k; the module's is k + 1.
+RawBuffer writeObjectIdMap(RawVulkanHost& host, size_t instanceCount) {
+    std::vector<std::array<uint32_t, 2>> pairs;
+    for (uint32_t k = 0; k < instanceCount; ++k) pairs.push_back({kSparseIdBase + kSparseIdStride * k, k + 1});
+    RawBuffer b = host.createHostBuffer(pairs.size() * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (b.mapped) std::memcpy(b.mapped, pairs.data(), pairs.size() * 8);
+    return b;
+}
 
 // The module's part of the frame, recorded between the host's G-buffer and its readback copies.
 Result<HostEngineFrame> renderFrame(RawVulkanHost& host, HostResources& r, const scene::Scene& scene,
                                     const CameraView& camera, uint32_t seed, const HostEngineOptions& options) {
     CAUSTICS_TRY(EmbeddedCaustics embedded, embedCaustics(host, r.gbuffer, r.output.image, scene,
                                                           hostEngineSettings(seed, true), options.ownSceneTables));
+    if (options.objectIdMap) {
+        CAUSTICS_TRY(embedded.gbuffer.objectIdMap,
+                     rhi::importVulkanBuffer(*embedded.device, {.buffer = r.objectIdMap.buffer,
+                                                                .byteSize = scene.instances.size() * 8,
+                                                                .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                                                .debugName = "host object id map"}));
+        embedded.gbuffer.objectIdMapCount = uint32_t(scene.instances.size());
+    }
     HostSceneTables hostScene;
     if (options.ownSceneTables) {
         CAUSTICS_TRY(hostScene, importHostScene(*embedded.device, r.rayTracing));
@@ -167,6 +187,14 @@ Result<HostEngineFrame> hostEngineFrame(const scene::Scene& scene, const CameraV
     HostResources r;
     const uint64_t pixels = uint64_t(kSize) * kSize;
     bool created = r.gbuffer.create(host, scene, kSize, kSize);
+    if (options.sparseObjectIds) {
+        r.gbuffer.idBase = kSparseIdBase;
+        r.gbuffer.idStride = kSparseIdStride;
+    }
+    if (options.objectIdMap) {
+        r.objectIdMap = writeObjectIdMap(host, scene.instances.size());
+        created = created && r.objectIdMap.mapped;
+    }
     if (options.ownSceneTables)
         created = created && r.rayTracing.create(host, scene, std::min(options.instanceRows, scene.instances.size()),
                                                       options.diffuseAlbedoScale);
@@ -180,7 +208,7 @@ Result<HostEngineFrame> hostEngineFrame(const scene::Scene& scene, const CameraV
                                                                                 "acceleration structures failed"));
     r.gbuffer.destroy();
     r.rayTracing.destroy();
-    for (RawBuffer* b : {&r.readback, &r.idBack, &r.depthBack}) host.destroy(*b);
+    for (RawBuffer* b : {&r.readback, &r.idBack, &r.depthBack, &r.objectIdMap}) host.destroy(*b);
     host.destroy(r.output);
     host.destroyAll();   // leaks of the wrapped device would be reported here
     messages = host.messages();

@@ -38,7 +38,12 @@ struct HostEngineOptions {
     // Scales the base colour of the diffuse materials in the host's material table only (ownSceneTables):
     // the caustic's receiver BRDF comes from that table, so its radiance scales with it.
     float diffuseAlbedoScale = 1.0f;
+    // The host's G-buffer writes its own object ids, kSparseIdBase + kSparseIdStride * instance row,
+    // instead of the module's row + 1; with objectIdMap it hands the module the (hostId, moduleId) map.
+    bool sparseObjectIds = false;
+    bool objectIdMap = false;
 };
+inline constexpr uint32_t kSparseIdBase = 1000, kSparseIdStride = 7;
 
 // The engine's whole frame: its G-buffer (and acceleration structures), the module, readback of its
 // output image and of its objectId and linearDepth images. `messages`: the validation layer's

@@ -150,7 +150,7 @@ void HostGBufferCompute::record(const CameraView& camera) {
     push.eye = glm::vec4(glm::vec3(invView[3]), float(triangleCount_));
     // The view looks down -Z: the camera axis is minus the view's third basis vector in world space.
     push.forward = glm::vec4(glm::normalize(-glm::vec3(invView[2])), 0.0f);
-    push.size = glm::vec4(float(width_), float(height_), 0.0f, 0.0f);
+    push.size = glm::vec4(float(width_), float(height_), float(idBase), float(idStride));   // exact below 2^24
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1, &set_, 0, nullptr);
     vkCmdPushConstants(cmd, pipelineLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);

@@ -30,6 +30,8 @@ public:
     void destroy();
 
     std::array<RawImage, kChannelCount> images{};
+    // The host's object id of instance row k is idBase + idStride * k (1 + k: the module's own ids).
+    uint32_t idBase = 1, idStride = 1;
 
 private:
     RawVulkanHost* host_ = nullptr;

@@ -74,6 +74,22 @@ TEST_F(HostGBufferRefusal, MissingRequiredChannelIsNamed) {
     EXPECT_NE(st.message().find("hostGBuffer.objectId is missing"), std::string::npos) << st.message();
 }
 
+// An id map shorter than the count the host states: the id pass would search past its end.
+TEST_F(HostGBufferRefusal, ObjectIdMapShorterThanItsCountIsNamedWithBothCounts) {
+    HostGBuffer g = depthAndIds(texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host depth"),
+                                texture(rhi::Format::R32_UINT, rhi::TextureUsage::Sampled, "host ids"));
+    auto map = device->createBuffer(
+        rhi::BufferDesc().setByteSize(3 * 8).setUsage(rhi::BufferUsage::Storage).setDebugName("host id map"));
+    ASSERT_TRUE(map) << map.message();
+    g.objectIdMap = map.value();
+    g.objectIdMapCount = 4;
+    Status st = addWith(g);
+    ASSERT_FALSE(st);
+    EXPECT_NE(st.message().find("hostGBuffer.objectIdMap ('host id map') holds 3 (hostId, moduleId) pairs"),
+              std::string::npos) << st.message();
+    EXPECT_NE(st.message().find("objectIdMapCount is 4"), std::string::npos) << st.message();
+}
+
 TEST_F(HostGBufferRefusal, DepthTextureIsNotRequired) {
     // No depth texture: the module never reads it.
     Status st = addWith(depthAndIds(texture(rhi::Format::R32_FLOAT, rhi::TextureUsage::Sampled, "host depth"),

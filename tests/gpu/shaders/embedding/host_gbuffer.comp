@@ -3,7 +3,8 @@
 // tracing. One camera ray per pixel centre, intersected with every world-space triangle of the scene
 // (Moller-Trumbore), written in the module's G-buffer contract (passes/include/caustics/gbuffer.h):
 // normal (interpolated, facing the viewer) + roughness, linear albedo + metallic, optics, linear depth
-// along the camera axis, objectId = instance index + 1. Background: all zero.
+// along the camera axis, objectId = the host's id of the instance, idBase + idStride * instance index
+// (1 + 1 * index: the module's own ids). Background: all zero.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 struct Triangle {
@@ -27,7 +28,7 @@ layout(push_constant) uniform Camera {
     mat4 invViewProj;   // Vulkan clip (y down, z 0..1) -> world
     vec4 eye;           // xyz; w = triangle count
     vec4 forward;       // xyz camera axis
-    vec4 size;          // xy width, height
+    vec4 size;          // xy width, height; zw idBase, idStride
 } cam;
 
 void main() {
@@ -80,5 +81,5 @@ void main() {
     imageStore(albedoMetallic, p, look.albedoMetallic);
     imageStore(optics, p, look.optics);
     imageStore(linearDepth, p, vec4(dot(hit - origin, cam.forward.xyz)));
-    imageStore(objectId, p, uvec4(instance + 1u));
+    imageStore(objectId, p, uvec4(uint(cam.size.z) + uint(cam.size.w) * instance));
 }
