@@ -133,9 +133,12 @@ void handleKeyPress(ViewerContext& v, int key) {
             }
             break;
         case GLFW_KEY_M: v.state.animation.objects = !v.state.animation.objects; break;
-        case GLFW_KEY_O:
-            if (!v.state.lights.empty() && !v.state.animation.orbitingLights.erase(0)) v.state.animation.orbitingLights.insert(0);
+        case GLFW_KEY_O: {   // light 0's orbit on/off
+            std::set<uint32_t>& orbiting = v.state.animation.orbitingLights;
+            if (orbiting.count(0)) orbiting.erase(0);
+            else if (!v.state.lights.empty()) orbiting.insert(0);
             break;
+        }
         case GLFW_KEY_P: v.state.animation.paused = !v.state.animation.paused; break;
         default: break;
     }
