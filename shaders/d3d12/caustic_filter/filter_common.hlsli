@@ -18,15 +18,16 @@ float filterRelativeDepthTolerance(float tanHalfFovY, float imageHeight, float3 
 }
 
 // Weight with which source pixel q spreads its radiance to pixel p = q + offset in one a-trous
-// iteration (SVGF's edge-stopping functions; the formulas and why the luminance term uses
-// Var_q + Var_p are in filter_common.glsl).
+// iteration (SVGF's edge-stopping functions with a Gaussian luminance term; the formulas, why the
+// luminance term uses Var_q + Var_p and why it is Gaussian are in filter_common.glsl).
 float filterSpreadWeight(int2 offset, int stepWidth, float zq, float zp, float2 gradZq, float3 nq, float3 np,
                          float lq, float lp, float varianceQ, float varianceP, float sigmaLuminance) {
     int2 k = abs(offset) / stepWidth;
     float planar = dot(gradZq, float2(offset));
     float wz = exp(-abs(zp - zq - planar) / (abs(planar) + 0.002f * zq * float(stepWidth)));
     float wn = pow(max(0.0f, dot(nq, np)), 128.0f);
-    float wl = exp(-abs(lp - lq) / (sigmaLuminance * sqrt(varianceQ + varianceP) + 1e-20f));
+    float d = abs(lp - lq) / (sigmaLuminance * sqrt(varianceQ + varianceP) + 1e-20f);
+    float wl = exp(-0.5f * d * d);
     return kFilterKernel[k.x] * kFilterKernel[k.y] * wz * wn * wl;
 }
 

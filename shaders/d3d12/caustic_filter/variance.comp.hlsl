@@ -1,7 +1,7 @@
 // Variance of the accumulated luminance for the a-trous luminance edge-stopping (mirror of
 // shaders/vulkan/caustic_filter/variance.comp, which explains the model): temporal moments with 4 or
-// more frames of history, else photon shot noise q l (q: smallest non-zero luminance of this frame in
-// the 7x7 window, l: the pixel's accumulated luminance). Alpha: variance of the mean.
+// more frames of history (max(own, 3x3 mean)), else photon shot noise q l (q: smallest non-zero luminance of this frame in
+// the 7x7 window, l: max(own, 3x3 mean) of the accumulated luminance). Alpha: variance of the mean.
 #include "caustic_filter/filter_common.hlsli"
 Texture2D<float4> current : register(t0, space0);
 Texture2D<float4> temporalColor : register(t1, space0);
@@ -13,6 +13,23 @@ ConstantBuffer<Push> pc : register(b0, space999);
 
 static const float kTemporalHistory = 4.0f;
 
+float temporalVariance(float3 moments) { return max(0.0f, moments.y - moments.x * moments.x); }
+
+// 3x3 mean of the neighbours' temporal variance on the same object.
+float localMeanTemporalVariance(int2 p, uint objectId) {
+    float sum = 0.0f, count = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            int2 q = p + int2(dx, dy);
+            if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
+            if (gObjectId.Load(int3(q, 0)) != objectId) continue;
+            sum += temporalVariance(temporalMoments.Load(int3(q, 0)).xyz);
+            count += 1.0f;
+        }
+    }
+    return sum / max(count, 1.0f);
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 tid : SV_DispatchThreadID) {
     int2 p = int2(tid.xy);
@@ -23,9 +40,10 @@ void main(uint3 tid : SV_DispatchThreadID) {
     float n = max(moments.z, 1.0f);
     float variance = 0.0f;
     if (objectId != 0u && n >= kTemporalHistory) {
-        variance = max(0.0f, moments.y - moments.x * moments.x);
+        variance = max(temporalVariance(moments), localMeanTemporalVariance(p, objectId));
     } else if (objectId != 0u) {
         float quantum = 3.0e38f;
+        float localSum = 0.0f, localCount = 0.0f;
         for (int dy = -3; dy <= 3; ++dy) {
             for (int dx = -3; dx <= 3; ++dx) {
                 int2 q = p + int2(dx, dy);
@@ -33,9 +51,14 @@ void main(uint3 tid : SV_DispatchThreadID) {
                 if (gObjectId.Load(int3(q, 0)) != objectId) continue;
                 float l = filterLuminance(current.Load(int3(q, 0)).rgb);
                 if (l > 0.0f) quantum = min(quantum, l);
+                if (abs(dx) <= 1 && abs(dy) <= 1) {
+                    localSum += filterLuminance(temporalColor.Load(int3(q, 0)).rgb);
+                    localCount += 1.0f;
+                }
             }
         }
-        if (quantum < 3.0e38f) variance = quantum * filterLuminance(accumulated);
+        float expected = max(filterLuminance(accumulated), localSum / max(localCount, 1.0f));
+        if (quantum < 3.0e38f) variance = quantum * expected;
     }
     outColor[p] = float4(accumulated, variance / n);
 }

@@ -19,20 +19,24 @@ float filterRelativeDepthTolerance(float tanHalfFovY, float imageHeight, vec3 no
 }
 
 // Weight with which source pixel q spreads its radiance to pixel p = q + offset in one a-trous
-// iteration (SVGF's edge-stopping functions, Schied et al. 2017, eq. 3-5):
+// iteration (SVGF's edge-stopping functions, Schied et al. 2017, eq. 3-5, with a Gaussian luminance term):
 //   w_z = exp(-|z_p - z_q - grad z_q . offset| / (|grad z_q . offset| + 0.002 z_q step))   (a plane passes)
 //   w_n = max(0, n_q . n_p)^128
-//   w_l = exp(-|l_p - l_q| / (sigma_l sqrt(Var_q + Var_p)))
+//   w_l = exp(-d^2 / 2),  d = |l_p - l_q| / (sigma_l sqrt(Var_q + Var_p))
 // times the B3 kernel; the caller checks the object id. The luminance term uses the variance of the
 // difference, so it is symmetric in p and q: no net flow between two pixels whose difference is noise
-// (a one-sided scale drains a focal spot's shoulders into the darker plateau around it).
+// (a one-sided scale drains a focal spot's shoulders into the darker plateau around it). Gaussian, not
+// SVGF's exp(-d): a difference of one deviation keeps 0.61 of the weight (noise is averaged), one of
+// three keeps 0.011 (a fold line or a cusp stops the spreading); exp(-d) keeps 0.37 and 0.05, which
+// blurred the ring's cusp to 0.82 of its peak in one frame (docs/caustics.md "Filter").
 float filterSpreadWeight(ivec2 offset, int stepWidth, float zq, float zp, vec2 gradZq, vec3 nq, vec3 np, float lq,
                          float lp, float varianceQ, float varianceP, float sigmaLuminance) {
     ivec2 k = abs(offset) / stepWidth;
     float planar = dot(gradZq, vec2(offset));
     float wz = exp(-abs(zp - zq - planar) / (abs(planar) + 0.002 * zq * float(stepWidth)));
     float wn = pow(max(0.0, dot(nq, np)), 128.0);
-    float wl = exp(-abs(lp - lq) / (sigmaLuminance * sqrt(varianceQ + varianceP) + 1e-20));
+    float d = abs(lp - lq) / (sigmaLuminance * sqrt(varianceQ + varianceP) + 1e-20);
+    float wl = exp(-0.5 * d * d);
     return kFilterKernel[k.x] * kFilterKernel[k.y] * wz * wn * wl;
 }
 

@@ -3,12 +3,14 @@
 #extension GL_EXT_samplerless_texture_functions : require
 // Variance of the accumulated luminance: the scale of the a-trous luminance edge-stopping (SVGF
 // section 4.2; docs/caustics.md "Filter"). With 4 or more frames of history it is temporal: the
-// per-frame variance E[l^2] - E[l]^2 from the accumulated moments. Shorter histories use a spatial
+// per-frame variance E[l^2] - E[l]^2 from the accumulated moments, max(own, 3x3 mean). Shorter histories use a spatial
 // estimate of the photon shot noise: a pixel's caustic radiance is a sum of photon splats, so its
 // per-frame variance is about q E[l], q being the luminance one photon adds (a compound Poisson sum
 // of near-equal quanta). q is the smallest non-zero luminance of this frame in the 7x7 window (a
-// pixel that one photon reached), E[l] is estimated by the pixel's own accumulated luminance (the
-// a-trous passes spread a pixel by its own noise; a zero pixel has nothing to spread). SVGF's 7x7 sample
+// pixel that one photon reached), E[l] is max(own, 3x3 mean) of the accumulated luminance: a pixel that
+// no photon reached inside a lit region is a draw of zero from the region's mean, so it gets that mean's
+// noise and the a-trous passes fill it; with E[l] = own it had zero variance and stayed a dark hole
+// (the max keeps a focal spot's own, larger, noise). SVGF's 7x7 sample
 // variance would count a focal spot's own shape as noise and blur it away; shot noise grows only as
 // the square root of the photon count, so a bright spot of many photons keeps its edges.
 // Output alpha: the variance of the accumulated mean, per-frame variance / n.
@@ -23,6 +25,24 @@ layout(push_constant) uniform Push { int width; int height; } pc;
 
 const float kTemporalHistory = 4.0;   // SVGF's threshold for trusting the temporal moments
 
+float temporalVariance(vec3 moments) { return max(0.0, moments.y - moments.x * moments.x); }
+
+// 3x3 mean of the neighbours' temporal variance on the same object (SVGF prefilters the variance the
+// same way): a pixel's own moments from a few photons per frame estimate its variance poorly.
+float localMeanTemporalVariance(ivec2 p, uint id) {
+    float sum = 0.0, count = 0.0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = p + ivec2(dx, dy);
+            if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
+            if (texelFetch(gObjectId, q, 0).r != id) continue;
+            sum += temporalVariance(texelFetch(temporalMoments, q, 0).xyz);
+            count += 1.0;
+        }
+    }
+    return sum / max(count, 1.0);
+}
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (p.x >= pc.width || p.y >= pc.height) return;
@@ -32,9 +52,10 @@ void main() {
     float n = max(moments.z, 1.0);
     float variance = 0.0;
     if (id != 0u && n >= kTemporalHistory) {
-        variance = max(0.0, moments.y - moments.x * moments.x);
+        variance = max(temporalVariance(moments), localMeanTemporalVariance(p, id));
     } else if (id != 0u) {
         float quantum = 3.0e38;
+        float localSum = 0.0, localCount = 0.0;
         for (int dy = -3; dy <= 3; ++dy) {
             for (int dx = -3; dx <= 3; ++dx) {
                 ivec2 q = p + ivec2(dx, dy);
@@ -42,9 +63,14 @@ void main() {
                 if (texelFetch(gObjectId, q, 0).r != id) continue;
                 float l = filterLuminance(texelFetch(current, q, 0).rgb);
                 if (l > 0.0) quantum = min(quantum, l);
+                if (abs(dx) <= 1 && abs(dy) <= 1) {
+                    localSum += filterLuminance(texelFetch(temporalColor, q, 0).rgb);
+                    localCount += 1.0;
+                }
             }
         }
-        if (quantum < 3.0e38) variance = quantum * filterLuminance(accumulated);
+        float expected = max(filterLuminance(accumulated), localSum / max(localCount, 1.0));
+        if (quantum < 3.0e38) variance = quantum * expected;
     }
     imageStore(outColor, p, vec4(accumulated, variance / n));
 }

@@ -4,8 +4,8 @@
 // peak = 3x3 mean at the reference's brightest 3x3 location, energy = sum of l.
 // Set CAUSTICS_FILTER_IMAGES=<folder> to get the images as PGM (and raw float luminance) files.
 // Bounds are the task's (issue 10); the measured values are printed as "[ measured ]" lines. Noise they sit
-// on (lavapipe, 2026-11-30): the reference itself, seed 2000 vs seed 1000, differs by L1 0.074 (ball) and
-// 0.087 (ring) with peak and energy within 0.6 %; the 1-ray frame's energy is within 0.4 % of the reference
+// on (lavapipe, 2026-12-01): the reference itself, seed 2000 vs seed 1000, differs by L1 0.074 (ball) and
+// 0.042 (ring) with peak and energy within 0.6 %; the 1-ray frame's energy is within 0.4 % of the reference
 // for these seeds, so the 3 % energy bound measures the filter, not the sampling.
 #include <gtest/gtest.h>
 
@@ -31,7 +31,9 @@ struct FilterScene {
     scene::Camera camera;
     scene::Camera panned;      // the camera turned by about 5 degrees (pan test)
     CausticsSettings settings; // 1 ray per texel, filter on with its defaults
-    // The converged image: one frame at this many rays per texel, filter off (2.4 M rays).
+    // The converged image: one frame at this many rays per texel, filter off (2.4 M rays for the ball,
+    // 9.4 M for the ring: at 64 rays per texel the ring's reference differed from another seed's by L1
+    // 0.087, a third of the one-frame L1 under test; at 256 by 0.042).
     float referenceRays = 0.0f;
 };
 
@@ -64,7 +66,7 @@ FilterScene glassBallFocalSpot() {
 
 // Polished ring under light at 30 degrees elevation; the camera looks down at the cardioid inside.
 FilterScene ringCloseUp() {
-    FilterScene s{"ring", scene::makeMetalRingScene(), {}, {}, baseSettings(192), 64.0f};
+    FilterScene s{"ring", scene::makeMetalRingScene(), {}, {}, baseSettings(192), 256.0f};
     s.camera.eye = {-0.1f, 1.1f, 0.5f};
     s.camera.target = {-0.15f, 0.0f, 0.0f};
     s.camera.verticalFovRadians = glm::radians(35.0f);
@@ -124,9 +126,15 @@ void print(const std::string& what, const Comparison& c) {
 double white(const std::vector<glm::vec3>& ref) { return brightest3x3(ref, kSize, kSize).value; }
 
 // One frame at 1 ray per texel: the filter must beat 4x the rays without filtering (relative L1), keep
-// the focal spot / cusp (3x3 peak within 20 %) and the energy (within 3 %).
+// the focal spot / cusp (3x3 peak within 20 %) and the energy (within 3 %). Measured over the seeds 1..6
+// of the filtered frame and the 4-ray image (2026-12-01, the test runs seed 1):
+//   ring: filtered L1 0.218-0.230 (seed 1: 0.2231) vs 4 rays 0.237-0.246 (0.2370); filtered 3x3 peak
+//         0.84-1.01 (0.92; the unfiltered 1-ray frame's own peak varies 0.91-1.08), energy within 0.6 %;
+//   ball: filtered L1 0.164-0.177 (0.1708) vs 4 rays 0.354-0.362 (0.3610); peak 0.93-0.99 (0.97).
+// Before the Gaussian luminance weight and the robust shot-noise variance (docs/caustics.md "Filter") the
+// ring failed: L1 0.278 against 0.242, peak 0.82.
 TEST_F(CausticFilter, OneFrameAtOneRayBeatsFourRaysUnfilteredAndKeepsThePeakAndEnergy) {
-    for (const FilterScene& s : {glassBallFocalSpot()}) {
+    for (const FilterScene& s : {glassBallFocalSpot(), ringCloseUp()}) {
         SCOPED_TRACE(s.name);
         const std::vector<glm::vec3>& ref = reference(s, s.camera, "main");
         const scene::Camera cams[] = {s.camera};
@@ -140,6 +148,7 @@ TEST_F(CausticFilter, OneFrameAtOneRayBeatsFourRaysUnfilteredAndKeepsThePeakAndE
         dumpLuminance(s.name + "_reference", ref, kSize, kSize, white(ref));
         dumpLuminance(s.name + "_1frame_filtered", one.filtered, kSize, kSize, white(ref));
         dumpLuminance(s.name + "_1frame_unfiltered", one.unfiltered, kSize, kSize, white(ref));
+        dumpLuminance(s.name + "_unfiltered_4rays", four, kSize, kSize, white(ref));
         EXPECT_LT(f.l1, u4.l1);
         EXPECT_NEAR(f.peak, 1.0, 0.2);
         EXPECT_NEAR(f.energy, 1.0, 0.03);
@@ -150,7 +159,10 @@ TEST_F(CausticFilter, OneFrameAtOneRayBeatsFourRaysUnfilteredAndKeepsThePeakAndE
 }
 
 // A still camera for 32 frames (= the default history cap): the temporal average of 32 frames at 1 ray
-// per texel, spatially filtered, must beat 16 rays unfiltered and keep the peak within 10 %.
+// per texel, spatially filtered, must beat 16 rays unfiltered and keep the peak within 10 %. Measured
+// (2026-12-01, filter seeds 1..6): ring L1 0.105-0.112 (seed 1: 0.1124) vs 0.1209, peak 0.99-1.01; ball
+// 0.096-0.099 (0.0993) vs 0.2094, peak within 0.5 %. (The ring's temporal mean alone, atrousIterations 0,
+// reaches 0.092: at 32 frames the spatial passes cost the ring detail; docs/caustics.md "Filter".)
 TEST_F(CausticFilter, StillCameraConvergesToTheUnfilteredMean) {
     for (const FilterScene& s : {glassBallFocalSpot(), ringCloseUp()}) {
         SCOPED_TRACE(s.name);
