@@ -78,6 +78,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         CausticFrame h = f;
         // Over the frame's capacity, not W x H: the TLAS stays allocated for W x H (any capacity fits).
         return [=](rg::PassContext& ctx) {
+            if (*h.sphereCapacity == 0) return;   // no sphere the earlier frame: nothing built, nothing gathered
             ctx.cmd().buildTopLevelFromBuffer(ctx.accelStruct(h.sphereTlas), ctx.buffer(h.instances), 0,
                                               std::min(*h.sphereCapacity, pixels));
         };
@@ -99,6 +100,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         uint32_t maxHits = f.in->settings.maxStoredHits;
         CausticFrame h = f;
         return [=](rg::PassContext& ctx) {
+            if (*h.sphereCapacity == 0) return;   // the TLAS was not built this frame
             CausticResources::Impl& r = *h.res;
             rhi::BindingSetDesc d;
             d.add(rhi::BindingSetItem::accelStructItem(0, ctx.accelStruct(h.sphereTlas)))

@@ -29,7 +29,8 @@ void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
             CausticResources::Impl& r = *h.res;
             *h.sphereCapacity = chooseSphereCapacity(*ctx.device(), *h.sphereReadback, h.width, h.height);
             rhi::ICommandList& cmd = ctx.cmd();
-            cmd.fillBuffer(ctx.buffer(h.instances), 0, 0, uint64_t(*h.sphereCapacity) * sizeof(rhi::InstanceDesc));
+            if (*h.sphereCapacity > 0)
+                cmd.fillBuffer(ctx.buffer(h.instances), 0, 0, uint64_t(*h.sphereCapacity) * sizeof(rhi::InstanceDesc));
             rhi::BindingSetDesc d;
             d.add(rhi::BindingSetItem::sampledTexture(0, ctx.texture(objectId)))
                 .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(optics)))

@@ -12,6 +12,7 @@ namespace caustics {
 
 uint32_t sphereTlasCapacity(std::optional<uint32_t> earlierCount, uint32_t pixels) {
     if (!earlierCount) return pixels;
+    if (*earlierCount == 0) return 0;   // nothing to build or gather (caustics/sphere_capacity.h)
     const uint64_t wanted = uint64_t(std::ceil(double(*earlierCount) * kSphereCapacityHeadroom));
     const uint64_t bucket = std::max<uint64_t>(std::bit_ceil(std::max<uint64_t>(wanted, 1)) / 8, 1);
     const uint64_t rounded = (wanted + bucket - 1) / bucket * bucket;

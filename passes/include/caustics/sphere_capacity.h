@@ -16,8 +16,13 @@ namespace caustics {
 // the bucket (an eighth of the next power of two, so 1.25-1.4 x in all) keeps the capacity, and so
 // the build's cost, steady while the count wobbles.
 inline constexpr double kSphereCapacityHeadroom = 1.25;
-// Smallest capacity: a frame that saw no sphere builds over this many inactive instances.
+// Smallest capacity when the earlier frame had spheres.
 inline constexpr uint32_t kMinSphereCapacity = 64;
+// After a frame without spheres (the camera turned away from every specular object) the capacity is 0:
+// caustics.spheres builds nothing and caustics.gather launches nothing, so such frames cost ~0 there
+// (a TLAS build has a fixed cost: 0.05 ms for 64 inactive instances on the H200). The price: when
+// specular objects come into view, their spheres are dropped (and counted) for up to framesInFlight
+// frames, as for any jump of the count.
 
 // No earlier count (first frame of a slot, or a different output size): every pixel can hold a
 // sphere, so W x H is always enough.

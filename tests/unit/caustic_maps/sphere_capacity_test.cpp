@@ -1,6 +1,6 @@
 // The sphere TLAS capacity policy (caustics/sphere_capacity.h): W x H without an earlier count, else the
 // earlier count with 1.25 x headroom rounded up to an eighth of a power of two, within
-// [kMinSphereCapacity, W x H].
+// [kMinSphereCapacity, W x H]; 0 after a frame without spheres.
 #include <gtest/gtest.h>
 
 #include "caustics/sphere_capacity.h"
@@ -29,10 +29,15 @@ TEST(SphereCapacity, SmallChangesOfTheCountKeepTheCapacity) {
 }
 
 TEST(SphereCapacity, ClampedToTheSmallestCapacityAndToEveryPixel) {
-    EXPECT_EQ(sphereTlasCapacity(0u, kPixels), kMinSphereCapacity);
+    EXPECT_EQ(sphereTlasCapacity(1u, kPixels), kMinSphereCapacity);
     EXPECT_EQ(sphereTlasCapacity(3u, kPixels), kMinSphereCapacity);
     EXPECT_EQ(sphereTlasCapacity(kPixels, kPixels), kPixels);
     EXPECT_EQ(sphereTlasCapacity(30u, 16u), 16u);
+}
+
+// A frame without spheres: the next frame of the slot builds and gathers nothing.
+TEST(SphereCapacity, NoEarlierSphereMeansNoBuild) {
+    EXPECT_EQ(sphereTlasCapacity(0u, kPixels), 0u);
 }
 
 }  // namespace
