@@ -4,8 +4,9 @@
     python3 scripts/plot_bench.py DIR [--out PNG_DIR]
 
 timings.csv -> lights.png (paper Figure 9), rays.png (Figure 11), depth.png (Figure 13), map.png,
-image.png: per-pass GPU medians against the swept setting, with the forward pass's ray segments per
-second on a second axis; quality.csv -> quality.png: relative L1 of the caustic image against the
+image.png: per-pass GPU medians against the swept setting (lights: the visible, away and culled
+series), with the forward pass's ray segments per
+second on a second axis, next to the incoherent ray ceiling of the same scene measured in the same run; quality.csv -> quality.png: relative L1 of the caustic image against the
 converged reference next to the caustic passes' time, filter off and on; memory.csv -> memory.png:
 caustic transients at each image size. Needs python3-matplotlib (scripts/install-deps.sh).
 """
@@ -40,13 +41,11 @@ def x_of(sweep, row):
     if sweep == "image":
         w, h = row["value"].split("x")
         return int(w) * int(h) / 1e6
-    if sweep == "lights":
-        return number(row, "maps")
     return number(row, "value")
 
 
 X_LABEL = {
-    "lights": "caustic lights (maps planned)",
+    "lights": "extra ring lights (visible/away: caustic lights; culled: cone holds no specular object)",
     "rays": "rays per texel",
     "depth": "max specular depth",
     "map": "caustic map side (texels)",
@@ -60,7 +59,7 @@ def plot_sweep(rows, sweep, out_dir, scene):
         return None
     fig, ax = plt.subplots(figsize=(8, 5))
     views = sorted({r["view"] for r in rows})
-    styles = {"visible": "-", "away": "--"}
+    styles = {"visible": "-", "away": "--", "culled": "-."}
     for view in views:
         part = sorted((r for r in rows if r["view"] == view), key=lambda r: x_of(sweep, r))
         xs = [x_of(sweep, r) for r in part]
@@ -79,11 +78,18 @@ def plot_sweep(rows, sweep, out_dir, scene):
     if sweep in ("rays", "map"):
         ax.set_xscale("log", base=2)
     ax.grid(True, alpha=0.3)
-    visible = sorted((r for r in rows if r["view"] == views[0]), key=lambda r: x_of(sweep, r))
+    first = "visible" if "visible" in views else views[0]
+    visible = sorted((r for r in rows if r["view"] == first), key=lambda r: x_of(sweep, r))
     seg = [number(r, "segments") / (number(r, "forward_ms") * 1e3) if number(r, "forward_ms") > 0 else 0
            for r in visible]
     ax2 = ax.twinx()
     ax2.plot([x_of(sweep, r) for r in visible], seg, "b:", marker="^", label="forward M segments/s")
+    ceiling = [number(r, "incoherent_ceiling_mrays_per_s") for r in visible if "incoherent_ceiling_mrays_per_s" in r]
+    if ceiling and max(ceiling) > 0:
+        # Measured in the same run on the same scene's TLAS (caustics-bench sweep, ceiling.csv).
+        xs = [x_of(sweep, r) for r in visible]
+        ax2.plot(xs, ceiling, "b-", alpha=0.4, label="incoherent ray ceiling, same scene (M rays/s)")
+        ax2.plot(xs, [0.6 * c for c in ceiling], "b--", alpha=0.4, label="60 % of the ceiling (issue 11 target)")
     ax2.set_ylabel("forward pass, M ray segments / s", color="b")
     lines, labels = ax.get_legend_handles_labels()
     l2, lb2 = ax2.get_legend_handles_labels()

@@ -9,27 +9,20 @@
 #include "bench_gpu.h"
 #include "bench_modes.h"
 #include "procedural_mesh.h"
+#include "ray_rates.h"
 
 namespace caustics::bench {
 namespace {
 
 using namespace caustics::rhi;
 
-// Mirrors `Frame` in shaders/rays_common.glsl.
-struct FrameConstants {
-    float cameraPosition[4], cameraRight[4], cameraUp[4], cameraForward[4];
-    float boundsMin[4], boundsMax[4];
-    uint32_t frame = 0;
-    uint32_t pad[3] = {};
-};
-
 void normalize3(float* v) {
     const float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     for (int i = 0; i < 3; ++i) v[i] /= len;
 }
 
-FrameConstants makeConstants(const BenchMesh& mesh, const BenchOptions& options) {
-    FrameConstants c{};
+RayFrameConstants makeConstants(const BenchMesh& mesh, const BenchOptions& options) {
+    RayFrameConstants c{};
     const float eye[3] = {0.0f, 0.6f, 3.2f};
     float forward[3] = {-eye[0], -eye[1], -eye[2]};
     normalize3(forward);
@@ -49,12 +42,6 @@ FrameConstants makeConstants(const BenchMesh& mesh, const BenchOptions& options)
     }
     return c;
 }
-
-struct Measurement {
-    const char* name;
-    double medianMs = 0;
-    double hitFraction = 0;
-};
 
 int fail(const std::string& what) {
     std::fprintf(stderr, "caustics-bench rays: %s\n", what.c_str());
@@ -107,72 +94,17 @@ int runRaysMode(const BenchOptions& options) {
     InstanceDesc instance;
     instance.blasAddress = blas.value()->deviceAddress();
 
-    auto layout = dev.createBindingLayout(BindingLayoutDesc()
-                                              .setVisibility(ShaderStage::AllRayTracing)
-                                              .add(0, BindingType::AccelStruct)
-                                              .add(1, BindingType::StorageBufferRW));
-    if (!layout) return fail(layout.message());
-    StateObjectDesc soDesc;
-    soDesc.libraries = {benchShaderLibrary("primary.rgen", "primary", ShaderStage::RayGen),
-                        benchShaderLibrary("incoherent.rgen", "incoherent", ShaderStage::RayGen),
-                        benchShaderLibrary("rays.rmiss", "miss", ShaderStage::Miss),
-                        benchShaderLibrary("rays.rchit", "closestHit", ShaderStage::ClosestHit)};
-    soDesc.hitGroups.push_back({"hit", HitGroupType::Triangles, "closestHit", "", ""});
-    soDesc.maxPayloadBytes = 4;
-    soDesc.globalBindings.layouts = {layout.value()};
-    soDesc.globalBindings.pushConstantBytes = sizeof(FrameConstants);
-    soDesc.debugName = "rays bench";
-    auto so = dev.createStateObject(soDesc);
-    if (!so) return fail(so.message());
-
-    const uint64_t rays = uint64_t(options.width) * options.height;
-    auto out = dev.createBuffer(BufferDesc().setByteSize(rays * 4).setDebugName("hit distances"));
-    auto readback = dev.createBuffer(BufferDesc().setByteSize(rays * 4).setUsage(BufferUsage::CopyDest)
-                                         .setMemory(MemoryType::Readback).setDebugName("hit readback"));
-    if (!out || !readback) return fail("could not create the output buffers");
-    auto set = dev.createBindingSet(BindingSetDesc()
-                                        .add(BindingSetItem::accelStructItem(0, tlas.value()))
-                                        .add(BindingSetItem::storageBuffer(1, out.value())),
-                                    layout.value());
-    if (!set) return fail(set.message());
     if (auto s = runOnce(dev, [&](ICommandList& cmd) {
             cmd.buildTopLevel(tlas.value(), std::span(&instance, 1));
             cmd.barrier(AccelStructBarrier{tlas.value(), ResourceState::AccelStructWrite, ResourceState::AccelStructRead});
-            cmd.barrier(BufferBarrier{out.value(), ResourceState::Undefined, ResourceState::UnorderedAccess});
         });
         !s)
         return fail(s.message());
 
-    FrameConstants constants = makeConstants(mesh, options);
-    std::vector<Measurement> results;
-    for (const char* rayGen : {"primary", "incoherent"}) {
-        auto table = dev.createShaderTable(ShaderTableDesc{so.value()}.setRayGen(rayGen).addMiss("miss").addHitGroup("hit"));
-        if (!table) return fail(table.message());
-        auto ms = timeFrames(dev, options.warmupFrames, options.frames, [&](ICommandList& cmd, uint32_t frame) {
-            constants.frame = frame;
-            cmd.setRayTracingState(so.value(), table.value());
-            cmd.setBindingSet(0, set.value());
-            cmd.setPushConstants(&constants, sizeof(constants));
-            cmd.dispatchRays(options.width, options.height);
-            // Write-after-write on the output between frames.
-            cmd.barrier(BufferBarrier{out.value(), ResourceState::UnorderedAccess, ResourceState::UnorderedAccess});
-        });
-        if (!ms) return fail(ms.message());
-        // Fraction of rays that hit: a sanity check that the rays really reach the mesh.
-        if (auto s = runOnce(dev, [&](ICommandList& cmd) {
-                cmd.barrier(BufferBarrier{out.value(), ResourceState::UnorderedAccess, ResourceState::CopySource});
-                cmd.barrier(BufferBarrier{readback.value(), ResourceState::Undefined, ResourceState::CopyDest});
-                cmd.copyBuffer(readback.value(), 0, out.value(), 0, rays * 4);
-                cmd.barrier(BufferBarrier{out.value(), ResourceState::CopySource, ResourceState::UnorderedAccess});
-            });
-            !s)
-            return fail(s.message());
-        std::vector<float> t(rays);
-        if (auto s = dev.readBuffer(readback.value(), t.data(), rays * 4); !s) return fail(s.message());
-        uint64_t hits = 0;
-        for (float v : t) hits += v >= 0.0f ? 1 : 0;
-        results.push_back({rayGen, median(ms.value()), double(hits) / double(rays)});
-    }
+    auto results = measureRayRates(dev, tlas.value(), makeConstants(mesh, options), options.width, options.height,
+                                   options, {"primary", "incoherent"});
+    if (!results) return fail(results.message());
+    const uint64_t rays = uint64_t(options.width) * options.height;
 
     std::printf("caustics-bench rays\n");
     std::printf("device   : %s (%s, %s backend)\n", caps.adapterName.c_str(), caps.driverName.c_str(),
@@ -185,9 +117,9 @@ int runRaysMode(const BenchOptions& options) {
     std::printf("frames   : %ux%u = %llu rays per frame, median of %u frames (after %u warm-up), GPU timestamps\n\n",
                 options.width, options.height, (unsigned long long)rays, options.frames, options.warmupFrames);
     std::printf("%-12s %12s %12s %8s\n", "rays", "median ms", "Mrays/s", "hit %");
-    for (const Measurement& m : results)
-        std::printf("%-12s %12.3f %12.2f %8.1f\n", m.name, m.medianMs, double(rays) / (m.medianMs * 1e3),
-                    100.0 * m.hitFraction);
+    for (const RayRate& r : results.value())
+        std::printf("%-12s %12.3f %12.2f %8.1f\n", r.rayGen.c_str(), r.medianMs, r.megaRaysPerSecond(),
+                    100.0 * r.hitFraction);
     return 0;
 }
 

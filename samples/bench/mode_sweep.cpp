@@ -1,9 +1,15 @@
 // `sweep` mode: the paper's section-4 measurements (Figures 9, 11, 13) and more, as CSV under --out:
 //   timings.csv  one row per run: frame and per-pass medians and the caustic counters, varying
-//                lights (extra ring lights 0..8, camera on the caustics and turned away: Figure 9),
+//                lights (extra ring lights 0..8, camera on the caustics and turned away: Figure 9; and
+//                0..8 "culled" ring lights aimed away from every specular object, which the map
+//                planner culls: view column "culled"),
 //                rays per texel (Figure 11), depth (Figure 13), map size and image size; backward_ms
 //                includes caustics.specularPixels and spheres_ms caustics.sphereCount (gather_ms already
 //                includes caustics.gatherGrid)
+//                and the forward pass's ray segments per second next to the incoherent ray ceiling of
+//                the same scene measured in the same run (ray_rates.h: --width x --height rays from
+//                uniform points of the scene's box in uniform directions against the scene TLAS), and
+//                their ratio (issue 11's target: >= 0.6 at >= 8 rays per texel); ceiling.csv has it alone
 //   memory.csv   every caustic transient of each run and its size
 //   quality.csv  relative L1 of the caustic image against a converged reference (16 rays per texel x
 //                --reference-frames frames, unfiltered) next to the time, filter off and on
@@ -14,10 +20,12 @@
 #include <functional>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 #include "bench_gpu.h"
 #include "bench_measure.h"
 #include "bench_modes.h"
+#include "ray_rates.h"
 
 namespace caustics::bench {
 namespace {
@@ -26,10 +34,14 @@ struct Run {
     std::string sweep, value;
     BenchView view = BenchView::Visible;
     uint32_t extraLights = 0;
+    uint32_t culledLights = 0;        // ring lights whose cone holds no specular object
+    bool culledSeries = false;        // the lights sweep's "culled" series (view column "culled")
     uint32_t width = 0, height = 0;
     CausticsSettings settings;
     const std::vector<float>* reference = nullptr;   // quality row against it when set
 };
+
+const char* runViewName(const Run& r) { return r.culledSeries ? "culled" : viewName(r.view); }
 
 class SweepWriter {
 public:
@@ -38,23 +50,26 @@ public:
         timings_ << "sweep,value,view,scene,width,height,lights,maps,map_size,rays_per_texel,depth,filter,frame_ms,"
                     "caustics_ms,maps_ms,emitters_ms,forward_ms,backward_ms,spheres_ms,gather_ms,filter_ms,photons,"
                     "texels_emitting,texels_dispatched,segments,spheres,stored_hits,hits_offered,overflow,"
-                    "transient_bytes,transient_heap_bytes,specular_pixels,backward_launches,sphere_capacity,spheres_dropped\n";
+                    "transient_bytes,transient_heap_bytes,specular_pixels,backward_launches,sphere_capacity,spheres_dropped,"
+                    "forward_msegments_per_s,incoherent_ceiling_mrays_per_s,forward_fraction_of_ceiling\n";
         memory_ << "sweep,value,view,resource,bytes\n";
         quality_ << "sweep,value,rays_per_texel,depth,filter,caustics_ms,frame_ms,relative_l1\n";
     }
     bool ok() const { return timings_.good() && memory_.good() && quality_.good(); }
+    void setCeiling(double megaRaysPerSecond) { ceilingMrays_ = megaRaysPerSecond; }
 
     void write(const Run& r, const scene::Scene& sc, const Measurement& m) {
         const CausticsSettings& s = r.settings;
+        const char* view = runViewName(r);
         uint64_t transientBytes = 0;
         for (const TransientMemory& t : m.transients) {
             transientBytes += t.bytes;
-            memory_ << r.sweep << ',' << r.value << ',' << viewName(r.view) << ',' << t.name << ',' << t.bytes << '\n';
+            memory_ << r.sweep << ',' << r.value << ',' << view << ',' << t.name << ',' << t.bytes << '\n';
         }
         std::string sceneName = sc.name;   // plain CSV: no quoting needed
         for (char& c : sceneName)
             if (c == ',' || c == '"') c = ';';
-        timings_ << r.sweep << ',' << r.value << ',' << viewName(r.view) << ',' << sceneName << ',' << r.width << ','
+        timings_ << r.sweep << ',' << r.value << ',' << view << ',' << sceneName << ',' << r.width << ','
                  << r.height << ',' << sc.lights.size() << ',' << m.maps << ',' << s.mapResolution << ','
                  << s.raysPerTexel << ',' << s.maxSpecularDepth << ',' << (s.filter ? "on" : "off") << ',' << m.frameMs
                  << ',' << m.causticsMs << ',' << m.passTime("caustics.maps") << ',' << m.passTime("caustics.emitters")
@@ -66,7 +81,11 @@ public:
                  << ',' << m.photons << ',' << m.emitterTexels << ',' << m.dispatchedTexels << ',' << m.segments << ','
                  << m.spheres << ',' << m.storedHits << ',' << m.hitAttempts << ',' << (m.hitAttempts > m.storedHits)
                  << ',' << transientBytes << ',' << m.transientHeapBytes << ',' << m.specularPixels << ','
-                 << m.backwardLaunches << ',' << m.sphereCapacity << ',' << m.spheresDropped << '\n';
+                 << m.backwardLaunches << ',' << m.sphereCapacity << ',' << m.spheresDropped;
+        const double forwardMs = m.passTime("caustics.forward");
+        const double segmentsPerS = forwardMs > 0.0 ? double(m.segments) / (forwardMs * 1e3) : 0.0;
+        timings_ << ',' << segmentsPerS << ',' << ceilingMrays_ << ','
+                 << (ceilingMrays_ > 0.0 ? segmentsPerS / ceilingMrays_ : 0.0) << '\n';
         if (r.reference)
             quality_ << r.sweep << ',' << r.value << ',' << s.raysPerTexel << ',' << s.maxSpecularDepth << ','
                      << (s.filter ? "on" : "off") << ',' << m.causticsMs << ',' << m.frameMs << ','
@@ -78,6 +97,7 @@ public:
 
 private:
     std::ofstream timings_, memory_, quality_;
+    double ceilingMrays_ = 0.0;
 };
 
 bool wanted(const BenchOptions& o, const char* sweep) {
@@ -98,7 +118,7 @@ std::vector<Run> planRuns(const BenchOptions& o, const std::vector<float>* refer
     const CausticsSettings base = benchSettings(o);
     std::vector<Run> runs;
     auto add = [&](const char* sweep, std::string value, const std::function<void(Run&)>& change) {
-        Run r{sweep, std::move(value), BenchView::Visible, o.extraLights, o.width, o.height, base, nullptr};
+        Run r{sweep, std::move(value), BenchView::Visible, o.extraLights, 0, false, o.width, o.height, base, nullptr};
         change(r);
         runs.push_back(r);
     };
@@ -106,6 +126,12 @@ std::vector<Run> planRuns(const BenchOptions& o, const std::vector<float>* refer
         for (BenchView view : {BenchView::Visible, BenchView::Away})
             for (uint32_t extra : {0u, 1u, 2u, 4u, 8u})
                 add("lights", text(extra), [&](Run& r) { r.view = view; r.extraLights = extra; });
+    if (wanted(o, "lights"))
+        for (uint32_t culled : {0u, 1u, 2u, 4u, 8u})
+            add("lights", text(culled), [&](Run& r) {
+                r.culledLights = culled;
+                r.culledSeries = true;
+            });
     if (wanted(o, "rays"))
         for (bool filter : {false, true})
             for (float rays : {0.25f, 0.5f, 0.75f, 1.0f, 2.0f, 4.0f, 8.0f, 25.0f})
@@ -155,15 +181,34 @@ int runSweepMode(const BenchOptions& o) {
 
     // One session (scene + module) per number of extra lights; settings and image size change in it.
     std::unique_ptr<BenchSession> session;
-    uint32_t sessionLights = ~0u;
-    auto sessionFor = [&](uint32_t extraLights) -> Result<BenchSession*> {
-        if (session && sessionLights == extraLights) return session.get();
+    std::pair<uint32_t, uint32_t> sessionLights{~0u, ~0u};   // extra, culled
+    auto sessionFor = [&](uint32_t extraLights, uint32_t culledLights = 0) -> Result<BenchSession*> {
+        if (session && sessionLights == std::pair{extraLights, culledLights}) return session.get();
         session.reset();
-        CAUSTICS_TRY(scene::Scene sc, loadBenchScene(sceneName, extraLights));
+        CAUSTICS_TRY(scene::Scene sc, loadBenchScene(sceneName, extraLights, culledLights));
         CAUSTICS_TRY(session, BenchSession::create(device.value(), std::move(sc), benchSettings(o)));
-        sessionLights = extraLights;
+        sessionLights = {extraLights, culledLights};
         return session.get();
     };
+
+    // The incoherent ray ceiling of this scene (its own TLAS and triangles), measured once: extra and
+    // culled lights do not change the geometry.
+    {
+        auto s = sessionFor(o.extraLights);
+        if (!s) return fail(s.message());
+        RayFrameConstants constants{};
+        sceneBox(s.value()->scene, constants.boundsMin, constants.boundsMax);
+        auto rates = measureRayRates(*device.value(), s.value()->gpu->tlas, constants, o.width, o.height, o, {"incoherent"});
+        if (!rates) return fail("ray ceiling: " + rates.message());
+        const RayRate& ceiling = rates->front();
+        writer.setCeiling(ceiling.megaRaysPerSecond());
+        std::ofstream(o.outDir + "/ceiling.csv") << "scene,rays,median_ms,mrays_per_s,hit_fraction\n"
+                                                  << sceneName << ',' << ceiling.raysPerFrame << ',' << ceiling.medianMs
+                                                  << ',' << ceiling.megaRaysPerSecond() << ',' << ceiling.hitFraction
+                                                  << '\n';
+        std::printf("  incoherent ceiling on the scene TLAS: %.2f M rays/s (%.1f %% hit)\n",
+                    ceiling.megaRaysPerSecond(), 100.0 * ceiling.hitFraction);
+    }
 
     // Converged references of the quality rows (depth 4 for the rays sweep, 16 for the depth sweep).
     std::vector<float> reference4, reference16;
@@ -180,13 +225,13 @@ int runSweepMode(const BenchOptions& o) {
 
     for (const Run& r : planRuns(o, &reference4, &reference16)) {
         if (Status ok = r.settings.validate(); !ok) return fail(r.sweep + " " + r.value + ": " + ok.message());
-        auto s = sessionFor(r.extraLights);
+        auto s = sessionFor(r.extraLights, r.culledLights);
         if (!s) return fail(s.message());
         auto m = measure(device.value(), *s.value(), r.settings, r.width, r.height, r.view, o, r.reference != nullptr);
         if (!m) return fail(r.sweep + " " + r.value + ": " + m.message());
         writer.write(r, s.value()->scene, m.value());
         std::printf("  %-6s %-10s %-7s caustics %8.3f ms  frame %8.3f ms\n", r.sweep.c_str(), r.value.c_str(),
-                    viewName(r.view), m->causticsMs, m->frameMs);
+                    runViewName(r), m->causticsMs, m->frameMs);
     }
     return 0;
 }
