@@ -55,11 +55,13 @@ bool coneTouchesSphere(glm::vec3 apex, glm::vec3 axis, float halfAngle, glm::vec
     return angle <= halfAngle + std::asin(std::min(1.0f, s.w / d));
 }
 
-// The instances map m must rasterise: occluders and specular objects inside its frustum.
-std::vector<uint32_t> instancesInFrustum(const CausticMapGpu& m, const SpecularBounds& bounds) {
+// The instances map m must rasterise: the specular objects inside its frustum, and the occluders there
+// when asked (CausticsSettings::mapOccluders).
+std::vector<uint32_t> instancesInFrustum(const CausticMapGpu& m, const SpecularBounds& bounds, bool occluders) {
     std::vector<uint32_t> drawn;
     for (uint32_t i = 0; i < bounds.allInstanceSpheres.size(); ++i) {
         glm::vec4 s = bounds.allInstanceSpheres[i];
+        if (!occluders && !bounds.instanceIsSpecular[i]) continue;
         if (s.w >= 0.0f && mapFrustumTouchesSphere(m, s)) drawn.push_back(i);
     }
     return drawn;
@@ -86,9 +88,12 @@ SpecularBounds computeSpecularBounds(const scene::Scene& scene) {
     for (const scene::Instance& inst : scene.instances) {
         if (inst.mesh >= scene.meshes.size()) {
             b.allInstanceSpheres.push_back(glm::vec4(0, 0, 0, -1));
+            b.instanceIsSpecular.push_back(false);
             continue;
         }
         const scene::Mesh& mesh = scene.meshes[inst.mesh];
+        const bool specular = mesh.material < scene.materials.size() && scene.materials[mesh.material].isSpecular();
+        b.instanceIsSpecular.push_back(specular);
         glm::vec3 lo(1e30f), hi(-1e30f);
         for (const glm::vec3& p : mesh.positions) {
             glm::vec3 w = glm::vec3(inst.transform * glm::vec4(p, 1.0f));
@@ -99,7 +104,6 @@ SpecularBounds computeSpecularBounds(const scene::Scene& scene) {
         if (lo.x > hi.x) continue;
         allLo = glm::min(allLo, lo);
         allHi = glm::max(allHi, hi);
-        bool specular = mesh.material < scene.materials.size() && scene.materials[mesh.material].isSpecular();
         if (!specular) continue;
         specLo = glm::min(specLo, lo);
         specHi = glm::max(specHi, hi);
@@ -118,7 +122,7 @@ SpecularBounds computeSpecularBounds(const scene::Scene& scene) {
     return b;
 }
 
-CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& bounds) {
+CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& bounds, bool drawOccluders) {
     CausticMapPlan plan;
     auto skip = [&](uint32_t l, std::string why) {
         plan.skippedLights.push_back(l);
@@ -144,7 +148,7 @@ CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& 
             m.nearPlane = 0.0f;
             m.viewProj = mapViewProj(m, back + bounds.radius);
             plan.maps.push_back(m);
-            plan.drawnInstances.push_back(instancesInFrustum(m, bounds));
+            plan.drawnInstances.push_back(instancesInFrustum(m, bounds, drawOccluders));
             continue;
         }
         bool spot = light.type == scene::LightType::Spot;
@@ -177,7 +181,7 @@ CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& 
         m.nearPlane = std::max(1e-3f, 1e-5f * (distance + bounds.radius));
         m.viewProj = mapViewProj(m, distance + bounds.radius * 1.01f + 1e-3f);
         plan.maps.push_back(m);
-        plan.drawnInstances.push_back(instancesInFrustum(m, bounds));
+        plan.drawnInstances.push_back(instancesInFrustum(m, bounds, drawOccluders));
     }
     return plan;
 }

@@ -80,7 +80,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
         return makeError("addCausticPasses: the G-buffer lacks linearDepth, objectId, optics (secondType) or "
                          "normalRoughness (filter)");
     CAUSTICS_CHECK(in.settings.validate());
-    CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene));
+    CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene), in.settings.mapOccluders);
     CAUSTICS_CHECK(checkDeviceLimits(in, plan));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
     CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height));

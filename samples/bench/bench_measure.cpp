@@ -14,6 +14,7 @@ CausticsSettings benchSettings(const BenchOptions& o) {
     s.raysPerTexel = o.raysPerTexel;
     s.maxSpecularDepth = o.maxDepth;
     s.filter = o.filter;
+    s.mapOccluders = o.mapOccluders;
     return s;
 }
 

@@ -60,6 +60,10 @@ Status setOption(BenchOptions& o, std::string_view flag, std::string_view value)
         CAUSTICS_TRY(o.maxDepth, parseCount(flag, value, 1, CausticsSettings::kMaxSpecularDepth));
     } else if (flag == "--map-size") {
         CAUSTICS_TRY(o.mapResolution, parseCount(flag, value, 1, CausticsSettings::kMaxMapResolution));
+    } else if (flag == "--map-occluders") {
+        if (value != "on" && value != "off")
+            return makeError("--map-occluders: expected on or off, got '" + std::string(value) + "'");
+        o.mapOccluders = value == "on";
     } else if (flag == "--filter") {
         if (value != "on" && value != "off") return makeError("--filter: expected on or off, got '" + std::string(value) + "'");
         o.filter = value == "on";
@@ -99,6 +103,7 @@ std::string benchUsage() {
         "  --depth D                   specular events per caustic path, 1 .. 31 (default 4)\n"
         "  --map-size N                caustic map side, 1 .. 8192 (default 512)\n"
         "  --filter on|off             caustic filter (default off, as the paper measured)\n"
+        "  --map-occluders on|off      caustic maps also draw occluders (default off: specular objects only)\n"
         "  --out DIR                   sweep: folder for the CSV files (created)\n"
         "  --reference-frames N        sweep: frames of 16 rays per texel in the quality reference (default 16)\n"
         "  --sweeps LIST               sweep: any of lights,rays,depth,map,image (default all)\n"

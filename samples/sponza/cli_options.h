@@ -45,6 +45,7 @@ struct CliOptions {
     uint32_t maxStoredHits = 1u << 20;
     bool filter = true;
     bool secondType = true;
+    bool mapOccluders = false;
     float exposure = 1.0f;
     SampleControls controls;              // --seed, --accumulate, --sphere-* (sample_controls.h)
     AnimationOptions animation;           // --animate, --animate-speed, --animate-frames (animation_options.h)

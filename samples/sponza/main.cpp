@@ -48,6 +48,7 @@ CausticsSettings settingsFromOptions(const sample::CliOptions& o) {
     s.maxStoredHits = o.maxStoredHits;
     s.filter = o.filter;
     s.secondType = o.secondType;
+    s.mapOccluders = o.mapOccluders;
     s.exposure = o.exposure;
     s.aov = toCausticsAov(o.aov);
     s.seed = o.controls.seed;

@@ -59,6 +59,7 @@ const std::map<std::string, Setter>& setters() {
         {"maxSpecularDepth", countField(&CausticsSettings::maxSpecularDepth)},
         {"russianRoulette", boolField(&CausticsSettings::russianRoulette)},
         {"secondType", boolField(&CausticsSettings::secondType)},
+        {"mapOccluders", boolField(&CausticsSettings::mapOccluders)},
         {"sphereRadiusPolicy",
          [](CausticsSettings& s, const std::string& f, const std::string& v) -> Status {
              if (v == "footprint") s.sphereRadiusPolicy = SphereRadiusPolicy::PixelFootprint;

@@ -7,8 +7,9 @@
 //               coverage loss; a cube map would waste 5/6 of its texels on most frames)
 //   directional orthographic, fitted laterally to the specular sphere, depth range to the scene
 // A light whose frustum contains no specular instance (per-instance bounding spheres) is skipped
-// before anything is rasterised or traced, and each map rasterises only the instances whose bounding
-// sphere touches its frustum (the forward pass reads nothing else; docs/caustics.md, "Cost").
+// before anything is rasterised or traced, and each map rasterises only the specular instances whose
+// bounding sphere touches its frustum (with `drawOccluders`, the other instances there too; the forward
+// pass reads nothing else; docs/caustics.md, "Cost" and "Maps without occluders").
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ struct SpecularBounds {
     float radius = 0.0f;
     std::vector<glm::vec4> instanceSpheres;   // xyz centre, w radius, one per specular instance
     std::vector<glm::vec4> allInstanceSpheres;   // one per scene instance (radius < 0: no geometry)
+    std::vector<bool> instanceIsSpecular;        // one per scene instance
     glm::vec3 sceneCentre{0.0f};
     float sceneRadius = 0.0f;
     bool empty() const { return instanceSpheres.empty(); }
@@ -55,7 +57,8 @@ struct CausticMapPlan {
     std::vector<CausticMapGpu> maps;          // one per texture-array layer
     std::vector<uint32_t> skippedLights;      // scene light indices without a map
     std::vector<std::string> skipReasons;     // parallel to skippedLights
-    std::vector<std::vector<uint32_t>> drawnInstances;   // parallel to maps: instances inside its frustum
+    // Parallel to maps: the instances inside its frustum it rasterises (specular ones; all with occluders).
+    std::vector<std::vector<uint32_t>> drawnInstances;
 };
 
 // Does the bounding sphere (xyz centre, w radius) touch the volume map m rasterises? Perspective: the
@@ -63,6 +66,9 @@ struct CausticMapPlan {
 // the map plane. Conservative: a `true` may still rasterise nothing.
 bool mapFrustumTouchesSphere(const CausticMapGpu& m, glm::vec4 sphere);
 
-CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& bounds);
+// drawOccluders: CausticsSettings::mapOccluders. The map only chooses the texels that emit; the forward
+// ray starts at the light and finds the true first hit, so a map without occluders emits from a
+// superset of the texels and the estimator stays unbiased (photons that meet an occluder end there).
+CausticMapPlan planCausticMaps(const scene::Scene& scene, const SpecularBounds& bounds, bool drawOccluders = false);
 
 }  // namespace caustics

@@ -35,6 +35,11 @@ struct CausticsSettings {
     uint32_t maxSpecularDepth = 4;      // specular events per caustic path
     bool russianRoulette = true;        // after the second event, by path throughput
     bool secondType = true;             // caustics seen through specular objects
+    // The caustic maps rasterise the specular instances only (false) or the occluders in the light's
+    // frustum too (true, the paper's light-space G-buffer). Both are unbiased: the forward ray finds
+    // the true first hit; without occluders, photons leave texels behind an occluder and end on it
+    // (docs/caustics.md, "Maps without occluders").
+    bool mapOccluders = false;
     SphereRadiusPolicy sphereRadiusPolicy = SphereRadiusPolicy::PixelFootprint;
     float sphereRadiusScale = 1.0f;     // PixelFootprint: radius in footprint widths (camera pixels)
     float sphereWorldRadius = 0.01f;    // FixedWorld: metres

@@ -48,7 +48,7 @@ TEST(CausticMapCulling, SpotMapDrawsTheSpecularObjectAndOccludersButNotWhatIsBes
     sc.lights.push_back(spot);
     // Between light and sphere (occluder), far to the side, and above (behind) the light.
     const uint32_t first = addSmallDiffuseBoxes(sc, {{0.0f, 2.5f, 0.0f}, {30.0f, 1.0f, 0.0f}, {0.0f, 6.0f, 0.0f}});
-    CausticMapPlan plan = planCausticMaps(sc, computeSpecularBounds(sc));
+    CausticMapPlan plan = planCausticMaps(sc, computeSpecularBounds(sc), true);
     ASSERT_EQ(plan.maps.size(), 1u);
     ASSERT_EQ(plan.drawnInstances.size(), 1u);
     for (uint32_t i = 0; i < first; ++i)
@@ -64,10 +64,24 @@ TEST(CausticMapCulling, DirectionalMapDrawsWhatIsUpstreamButNotWhatIsBesideTheBe
     d.lightDirection = {0.0f, -1.0f, 0.0f};
     scene::Scene sc = scene::makeGlassSphereScene(d);
     const uint32_t first = addSmallDiffuseBoxes(sc, {{0.1f, 3.0f, 0.0f}, {0.0f, 1.0f, 5.0f}});
-    CausticMapPlan plan = planCausticMaps(sc, computeSpecularBounds(sc));
+    CausticMapPlan plan = planCausticMaps(sc, computeSpecularBounds(sc), true);
     ASSERT_EQ(plan.maps.size(), 1u);
     EXPECT_TRUE(drawn(plan, 0, first)) << "box in the beam above the sphere";
     EXPECT_FALSE(drawn(plan, 0, first + 1)) << "box 5 m beside the beam";
+}
+
+// CausticsSettings::mapOccluders off (the default): the same beam, only the glass is drawn.
+TEST(CausticMapCulling, WithoutOccludersOnlyTheSpecularInstancesInTheFrustumAreDrawn) {
+    scene::AnalyticSceneDesc d;
+    d.height = 1.0f;
+    d.lightDirection = {0.0f, -1.0f, 0.0f};
+    scene::Scene sc = scene::makeGlassSphereScene(d);
+    const uint32_t first = addSmallDiffuseBoxes(sc, {{0.1f, 3.0f, 0.0f}});
+    CausticMapPlan plan = planCausticMaps(sc, computeSpecularBounds(sc));
+    ASSERT_EQ(plan.maps.size(), 1u);
+    ASSERT_EQ(plan.drawnInstances[0].size(), 1u);
+    EXPECT_TRUE(sc.materials[sc.meshes[sc.instances[plan.drawnInstances[0][0]].mesh].material].isSpecular());
+    EXPECT_FALSE(drawn(plan, 0, first)) << "box in the beam above the sphere";
 }
 
 TEST(CausticMapCulling, SphereTestIsConservativeAtTheFrustumCorner) {
