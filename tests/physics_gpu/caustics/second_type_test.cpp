@@ -6,93 +6,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "caustic_harness.h"
 #include "caustics/reference/second_type_reference.h"
 #include "gpu_test.h"
 #include "image_analysis.h"
+#include "second_type_metrics.h"
 #include "second_type_scenes.h"
 
 namespace caustics::test {
 namespace {
 
 class SecondType : public GpuTest {};
-
-CausticsSettings secondTypeSettings(uint32_t map, float rays) {
-    CausticsSettings s;
-    s.mapResolution = map;
-    s.raysPerTexel = rays;
-    s.filter = false;
-    s.maxSpecularDepth = 8;
-    s.russianRoulette = false;
-    s.maxStoredHits = 1u << 20;   // 80 MB of CausticHit: under lavapipe's 128 MB storage-buffer range
-    return s;
-}
-
-// Mean of the images of `frames` independent GPU frames (seeds 1..frames); the run of the last one
-// is returned with the means in firstType / secondType.
-Result<CausticRun> averagedRun(rhi::IDevice& device, const scene::Scene& scene, const scene::Camera& cam, uint32_t size,
-                               CausticsSettings s, uint32_t frames) {
-    CausticRun mean;
-    for (uint32_t k = 0; k < frames; ++k) {
-        s.seed = 1 + k;
-        CAUSTICS_TRY(CausticRun run, runCaustics(device, scene, cam, size, size, s));
-        if (k == 0) {
-            mean = run;
-            mean.firstType.assign(run.firstType.size(), glm::vec3(0.0f));
-            mean.secondType.assign(run.secondType.size(), glm::vec3(0.0f));
-        }
-        for (size_t i = 0; i < run.firstType.size(); ++i) {
-            mean.firstType[i] += run.firstType[i] / float(frames);
-            mean.secondType[i] += run.secondType[i] / float(frames);
-        }
-        mean.stats = run.stats;
-        mean.spheres = run.spheres;
-    }
-    return mean;
-}
-
-float centreDistance(uint32_t x, uint32_t y, uint32_t size) {
-    return std::hypot(float(x) + 0.5f - 0.5f * size, float(y) + 0.5f - 0.5f * size);
-}
-
-// Largest 3x3 box mean of luminance among pixels closer than `radius` to the image centre.
-float peak3x3(const std::vector<glm::vec3>& img, uint32_t size, float radius) {
-    float best = 0.0f;
-    for (uint32_t y = 1; y + 1 < size; ++y)
-        for (uint32_t x = 1; x + 1 < size; ++x) {
-            if (centreDistance(x, y, size) >= radius) continue;
-            float sum = 0.0f;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) sum += luminance(img[size_t(y + dy) * size + x + dx]);
-            best = std::max(best, sum / 9.0f);
-        }
-    return best;
-}
-
-// Sum of luminance over pixels closer than `radius` to the image centre.
-double energy(const std::vector<glm::vec3>& img, uint32_t size, float radius) {
-    double sum = 0.0;
-    for (uint32_t y = 0; y < size; ++y)
-        for (uint32_t x = 0; x < size; ++x)
-            if (centreDistance(x, y, size) < radius) sum += luminance(img[size_t(y) * size + x]);
-    return sum;
-}
-
-// Mean luminance in 1-pixel-wide rings around the image centre.
-std::vector<double> radialProfile(const std::vector<glm::vec3>& img, uint32_t size) {
-    std::vector<double> sum(size / 2, 0.0), count(size / 2, 0.0);
-    for (uint32_t y = 0; y < size; ++y)
-        for (uint32_t x = 0; x < size; ++x) {
-            float r = std::hypot(float(x) + 0.5f - 0.5f * size, float(y) + 0.5f - 0.5f * size);
-            if (size_t(r) < sum.size()) {
-                sum[size_t(r)] += luminance(img[size_t(y) * size + x]);
-                count[size_t(r)] += 1.0;
-            }
-        }
-    for (size_t i = 0; i < sum.size(); ++i) sum[i] /= std::max(count[i], 1.0);
-    return sum;
-}
 
 // The ball's caustic seen from above through the ball (issue 10's "second type" view): a central spike
 // on a plateau and a bright fold ring near the ball's rim. The CPU estimate traces 64 jittered camera
@@ -108,14 +34,7 @@ TEST_F(SecondType, GlassBallSeenFromAboveMatchesTheCpuHistogramEstimate) {
     auto gpu = averagedRun(*device, scene, cam, kSize, secondTypeSettings(256, 4.0f), 4);
     ASSERT_TRUE(gpu) << gpu.message();
 
-    reference::SecondTypeReferenceOptions o;
-    o.width = o.height = kSize;
-    o.samplesPerPixel = 64;
-    o.maxDepth = 8;
-    o.receiverHalfSize = 0.6f;
-    o.histogramResolution = 512;
-    o.photonsPerLight = 4'000'000;
-    auto cpu = reference::renderSecondTypeReference(scene, cam, o);
+    auto cpu = cpuSecondTypeEstimate(scene, cam, kSize, glm::vec2(0.0f), 0.6f);
     ASSERT_TRUE(cpu) << cpu.message();
     ASSERT_GT(cpu.value().pathsOnReceiver, 10000u);
 
