@@ -27,6 +27,11 @@ class SecondType : public GpuTest {};
 // at the default radius (one footprint width). Bounds: 3x3 peak and energy within 10 % (the task's).
 // Measured 2026-11-30 (docs/physics.md): peak 0.985, energy 0.996; with 2 footprint widths peak 0.70
 // (the disk blurs the spike), energy 0.989; with the old unfolded radius peak 0.194, energy 1.004.
+// Seed-to-seed (CAUSTICS_SECOND_TYPE_SEED offsets 0..7, 2026-12-01): peak 1.045 +- 0.038 (0.985-1.092),
+// energy 1.030 +- 0.023 (0.996-1.053); the test's own seeds (offset 0) give the lowest of both. The 10 %
+// bounds are the and kept; they are only 1.4 (peak) and 3.1 (energy) standard deviations above
+// the mean: another seed set could fail the peak (offset 6 reached 1.092). Which side (GPU gather or CPU
+// histogram) carries the spread is not measured yet.
 TEST_F(SecondType, GlassBallSeenFromAboveMatchesTheCpuHistogramEstimate) {
     constexpr uint32_t kSize = 128;
     scene::Scene scene = ballFromAboveScene();
@@ -69,7 +74,9 @@ TEST_F(SecondType, GlassBallSeenFromAboveMatchesTheCpuHistogramEstimate) {
 // (1 - R) / (1 + R) with R = ((n-1)/(n+1))^2 (Born & Wolf 1.6; 0.9231 at n = 1.5, near-normal view),
 // and a plate of IOR 1.0 changes nothing. Compared over the pixels that see the floor directly in the
 // run without the plate. Bounds: 2 % and 1 % (the task's). Measured 2026-11-30 (6 frames each, map
-// 256^2 x 8 rays): 0.9260 against 0.9231 and 1.0010 against 1.
+// 256^2 x 8 rays): 0.9260 against 0.9231 and 1.0010 against 1. Seed-to-seed (offsets 0..7, 2026-12-01):
+// 0.9235 +- 0.0013 (ratio to the expected 1.0004 +- 0.0014) and 1.0009 +- 0.0002: the 2 % and 1 % bounds
+// are 14 and 45 standard deviations from the mean, so they test the physics, not the sampling.
 void expectPlateFactor(rhi::IDevice& device, float ior, double expected, double tolerance) {
     constexpr uint32_t kSize = 96;
     scene::Camera cam = sideCausticCamera();
