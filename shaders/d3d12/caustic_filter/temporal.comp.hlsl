@@ -20,6 +20,36 @@ RWTexture2D<float4> outMoments : register(u11, space0);
 struct Push { uint historyValid; float maxHistory; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
+static const float kHistoryRejectDeviations = 3.0f;
+static const float kTrustedHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
+
+// True when this frame's caustic around p is inconsistent with the history (the caustic moved: a light
+// or an object moved, which the camera reprojection cannot follow; docs/caustics.md "Filter", "Moving
+// caustics"). Compares the 3x3 sums of this frame's luminance C and of the history's mean H over the
+// same taps (history texels nearest to the reprojected point, offset alike), taps of this object only.
+// Under "nothing changed", C - H has the variance of one frame's 3x3 sum, the sum of the taps' per-frame
+// variances V (temporal moments; for a compound-Poisson photon sum V = q_eff E[l], so no photon quantum
+// has to be guessed). Rejected when |C - H| > 3 sqrt(sum V) + 2 q, q the smallest non-zero luminance of
+// this frame in the 3x3 (one photon): a caustic of ~1 photon per pixel per frame that leaves a pixel
+// is caught in one frame, 3 photons where the history was dark start a new one; stray photons do not.
+bool historyRejected(int2 p, int2 nearest, int2 size, uint id) {
+    float c = 0.0f, h = 0.0f, v = 0.0f, quantum = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            int2 q = p + int2(dx, dy), hq = nearest + int2(dx, dy);
+            if (any(min(q, hq) < int2(0, 0)) || any(max(q, hq) >= size)) continue;
+            if (gObjectId.Load(int3(q, 0)) != id || historyObjectId.Load(int3(hq, 0)) != id) continue;
+            float l = filterLuminance(current.Load(int3(q, 0)).rgb);
+            float3 m = historyMoments.Load(int3(hq, 0)).xyz;
+            c += l;
+            h += m.x;
+            v += max(0.0f, m.y - m.x * m.x);
+            if (l > 0.0f) quantum = quantum > 0.0f ? min(quantum, l) : l;
+        }
+    }
+    return abs(c - h) > kHistoryRejectDeviations * sqrt(v) + 2.0f * quantum;
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 tid : SV_DispatchThreadID) {
     CameraConstants camera = cameraBlock.camera;
@@ -61,7 +91,11 @@ void main(uint3 tid : SV_DispatchThreadID) {
                 hMoments += w * float3(m.x, max(0.0f, m.y - m.x * m.x), m.z);
                 wSum += w;
             }
-            if (wSum > 0.01f) {
+            // The test needs variances from the moments: histories shorter than kTrustedHistory frames
+            // are short already (their lag is at most that long).
+            bool rejected = wSum > 0.01f && hMoments.z / wSum >= kTrustedHistory &&
+                            historyRejected(p, int2(floor(prev + 0.5f)), size, objectId);
+            if (wSum > 0.01f && !rejected) {
                 hColor /= wSum;
                 hMoments /= wSum;
                 hMoments.y += hMoments.x * hMoments.x;   // back to E[l^2] of the blended history

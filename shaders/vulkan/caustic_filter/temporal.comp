@@ -7,7 +7,8 @@
 // bilinearly (disocclusion test). The history length n (a sample count, capped at maxHistory) makes
 // the blend 1/n: until the cap the result is the plain mean of every frame that saw the surface point
 // (an unbiased average), then an exponential average with weight 1/maxHistory. The luminance moments
-// (l, l^2) accumulate the same way for the variance estimate.
+// (l, l^2) accumulate the same way for the variance estimate. A history that this frame's photons
+// contradict (historyRejected: the caustic moved) is dropped.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "scene/camera.glsl"
 #include "caustic_filter/filter_common.glsl"
@@ -24,6 +25,36 @@ layout(set = 0, binding = 9) uniform utexture2D historyObjectId;
 layout(set = 0, binding = 10, rgba32f) uniform writeonly image2D outColor;
 layout(set = 0, binding = 11, rgba32f) uniform writeonly image2D outMoments;
 layout(push_constant) uniform Push { uint historyValid; float maxHistory; } pc;
+
+const float kHistoryRejectDeviations = 3.0;
+const float kTrustedHistory = 4.0;   // SVGF's threshold for trusting the temporal moments
+
+// True when this frame's caustic around p is inconsistent with the history (the caustic moved: a light
+// or an object moved, which the camera reprojection cannot follow; docs/caustics.md "Filter", "Moving
+// caustics"). Compares the 3x3 sums of this frame's luminance C and of the history's mean H over the
+// same taps (history texels nearest to the reprojected point, offset alike), taps of this object only.
+// Under "nothing changed", C - H has the variance of one frame's 3x3 sum, the sum of the taps' per-frame
+// variances V (temporal moments; for a compound-Poisson photon sum V = q_eff E[l], so no photon quantum
+// has to be guessed). Rejected when |C - H| > 3 sqrt(sum V) + 2 q, q the smallest non-zero luminance of
+// this frame in the 3x3 (one photon): a caustic of ~1 photon per pixel per frame that leaves a pixel
+// is caught in one frame, 3 photons where the history was dark start a new one; stray photons do not.
+bool historyRejected(ivec2 p, ivec2 nearest, ivec2 size, uint id) {
+    float c = 0.0, h = 0.0, v = 0.0, quantum = 0.0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = p + ivec2(dx, dy), hq = nearest + ivec2(dx, dy);
+            if (any(lessThan(min(q, hq), ivec2(0))) || any(greaterThanEqual(max(q, hq), size))) continue;
+            if (texelFetch(gObjectId, q, 0).r != id || texelFetch(historyObjectId, hq, 0).r != id) continue;
+            float l = filterLuminance(texelFetch(current, q, 0).rgb);
+            vec3 m = texelFetch(historyMoments, hq, 0).xyz;
+            c += l;
+            h += m.x;
+            v += max(0.0, m.y - m.x * m.x);
+            if (l > 0.0) quantum = quantum > 0.0 ? min(quantum, l) : l;
+        }
+    }
+    return abs(c - h) > kHistoryRejectDeviations * sqrt(v) + 2.0 * quantum;
+}
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -63,7 +94,11 @@ void main() {
                 hMoments += w * vec3(m.x, max(0.0, m.y - m.x * m.x), m.z);
                 wSum += w;
             }
-            if (wSum > 0.01) {
+            // The test needs variances from the moments: histories shorter than kTrustedHistory frames
+            // are short already (their lag is at most that long).
+            bool rejected = wSum > 0.01 && hMoments.z / wSum >= kTrustedHistory &&
+                            historyRejected(p, ivec2(floor(prev + 0.5)), size, id);
+            if (wSum > 0.01 && !rejected) {
                 hColor /= wSum;
                 hMoments /= wSum;
                 hMoments.y += hMoments.x * hMoments.x;   // back to E[l^2] of the blended history

@@ -199,6 +199,51 @@ TEST_F(CausticFilter, CameraPanLeavesNoTrail) {
     }
 }
 
+// The camera stays, the sun turns by 15 degrees about the vertical (the focal spot moves ~9 px): 8 frames
+// under the old sun, then 4 under the new one. The history follows the camera only, so without the
+// photon-count test (historyRejected in temporal.comp) 8/12 of the old spot would still show; the error
+// must be within 1.5x that of 4 frames started fresh under the new sun, as for a camera pan.
+TEST_F(CausticFilter, MovingLightLeavesNoTrail) {
+    const FilterScene s = glassBallFocalSpot();
+    const float turn = glm::radians(15.0f);
+    std::vector<scene::Light> before = s.scene.lights, after = s.scene.lights;
+    for (scene::Light& l : after) {
+        const glm::vec3 d = l.direction;
+        l.direction = {std::cos(turn) * d.x + std::sin(turn) * d.z, d.y, -std::sin(turn) * d.x + std::cos(turn) * d.z};
+    }
+    scene::Scene turned = s.scene;
+    turned.lights = after;
+    CausticsSettings refSettings = s.settings;
+    refSettings.filter = false;
+    refSettings.raysPerTexel = s.referenceRays;
+    refSettings.seed = 1000;
+    auto refRun = runCaustics(*device, turned, s.camera, kSize, kSize, refSettings);
+    ASSERT_TRUE(refRun) << refRun.message();
+    const std::vector<glm::vec3>& ref = refRun.value().radiance;
+    const PeakLocation oldSpot = brightest3x3(reference(s, s.camera, "main"), kSize, kSize);
+    const PeakLocation newSpot = brightest3x3(ref, kSize, kSize);
+    ASSERT_GT(std::hypot(double(newSpot.x - oldSpot.x), double(newSpot.y - oldSpot.y)), 5.0)
+        << "the focal spot must move for this test to mean anything";
+
+    auto run = [&](uint32_t framesBefore) {
+        std::vector<std::vector<scene::Light>> lights(framesBefore, before);
+        lights.insert(lights.end(), 4, after);
+        const std::vector<scene::Camera> cameras(lights.size(), s.camera);
+        auto r = runCaustics(*device, s.scene, cameras, kSize, kSize, s.settings, 3, lights);
+        EXPECT_TRUE(r) << r.message();
+        return r ? r.value().radiance : std::vector<glm::vec3>(size_t(kSize) * kSize);
+    };
+    const std::vector<glm::vec3> afterTurn = run(8), fromFresh = run(0);
+    Comparison t = compare(afterTurn, ref), f = compare(fromFresh, ref);
+    dumpLuminance("ball_light_turned_reference", ref, kSize, kSize, white(ref));
+    dumpLuminance("ball_light_turned_after_turn", afterTurn, kSize, kSize, white(ref));
+    dumpLuminance("ball_light_turned_fresh", fromFresh, kSize, kSize, white(ref));
+    print("ball 8 frames + sun turn + 4 frames", t);
+    print("ball 4 frames fresh under the new sun", f);
+    EXPECT_LT(t.l1, 1.5 * f.l1);
+    EXPECT_NEAR(t.peak, 1.0, 0.2);
+}
+
 std::string errorOf(const Status& s) { return s ? std::string() : s.message(); }
 
 // Absurd filter settings are refused naming the field.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 #include "caustics/frame_context.h"
 #include "caustics/scene_bindings.h"
@@ -41,8 +42,12 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, const
 
 Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::span<const scene::Camera> cameras,
                                uint32_t width, uint32_t height, const CausticsSettings& settings,
-                               uint32_t framesInFlight) {
+                               uint32_t framesInFlight, std::span<const std::vector<scene::Light>> lightsPerFrame) {
     const uint32_t frames = uint32_t(cameras.size());
+    if (!lightsPerFrame.empty() && lightsPerFrame.size() != cameras.size())
+        return makeError("runCaustics: " + std::to_string(lightsPerFrame.size()) + " light lists for " +
+                         std::to_string(cameras.size()) + " cameras");
+    scene::Scene lit = scene;   // the frame's lights; the caustic passes read them from the CPU scene
     CAUSTICS_TRY(scene::GpuScene gpuScene, scene::GpuScene::create(device, scene));
     CAUSTICS_TRY(SceneBindings bindings, SceneBindings::create(device, gpuScene, scene));
     BindingLayoutDesc cl;
@@ -64,9 +69,10 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
     glm::mat4 prevViewProj(1.0f);
     for (uint32_t frame = 0; frame < frames; ++frame) {
         graph.reset();
+        if (!lightsPerFrame.empty()) lit.lights = lightsPerFrame[frame];
         FrameContext fc;
         fc.device = &device;
-        fc.scene = &scene;
+        fc.scene = &lit;
         fc.gpuScene = &gpuScene;
         fc.sceneBindings = &bindings;
         fc.settings = &settings;
@@ -82,7 +88,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         GBuffer g = gbufferPass.addToGraph(graph, fc);
         CausticFrameInputs in;
         in.device = &device;
-        in.scene = &scene;
+        in.scene = &lit;
         in.gpuScene = &gpuScene;
         in.sceneBindings = &bindings;
         in.gbuffer = g;

@@ -32,9 +32,12 @@ Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, 
                                uint32_t width, uint32_t height, const CausticsSettings& settings, uint32_t frames = 1);
 // One frame per camera (a moving view; each frame's prevViewProj is the camera before it), on
 // CausticResources made for `framesInFlight` frame slots (frame n reuses slot n % framesInFlight).
+// With `lightsPerFrame` (one light list per camera), frame n renders the scene with those lights
+// (moving lights: the caustic moves under a still camera).
 Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, std::span<const scene::Camera> cameras,
                                uint32_t width, uint32_t height, const CausticsSettings& settings,
-                               uint32_t framesInFlight = 3);
+                               uint32_t framesInFlight = 3,
+                               std::span<const std::vector<scene::Light>> lightsPerFrame = {});
 
 // Sum of `images` over several independent frames (different seeds) divided by their count.
 }  // namespace caustics::test
