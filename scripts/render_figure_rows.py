@@ -7,30 +7,41 @@ depth (1 .. 16, 1 ray per texel), cropped to the caustic, side by side with thei
         [--scene builtin:atrium] [--width 1920 --height 1080] [--map-resolution 512] [--exposure E]
 
 Writes DIR/figure10_rays_per_texel.png and DIR/figure12_depth.png (and each frame as DIR/frames/*.png).
-The crop is the bounding box of the pixels above 2 % of the brightest one in the 25-rays-per-texel
-frame, padded by a tenth, so every tile shows the same region. Needs python3-matplotlib.
+On a GPU machine without matplotlib: `--print-commands` prints the sample's command lines (run them
+there with bash), then `--compose-only` here makes the rows from the DIR/frames/*.png they wrote.
+The crop holds the middle 95 % of the 25-rays-per-texel frame's light along each axis (stray photons
+stay out), padded by a fifth, so every tile shows the same region. Needs python3-matplotlib.
 """
 import argparse
 import os
 import subprocess
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.image as mpimg  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import shlex
 
 RAYS = ["0.25", "0.5", "0.75", "1", "2", "4", "8", "25"]
 DEPTHS = ["1", "2", "3", "4", "8", "16"]
 
 
-def render(args, frames_dir, name, rays, depth):
-    path = os.path.join(frames_dir, f"{name}.png")
-    cmd = [args.sample, "--scene", args.scene, "--width", str(args.width), "--height", str(args.height),
-           "--map-resolution", str(args.map_resolution), "--rays-per-texel", rays, "--max-depth", depth,
-           "--aov", "caustics", "--no-filter", "--exposure", str(args.exposure), "--out", path]
+def sample_command(args, path, rays, depth):
+    return [args.sample, "--scene", args.scene, "--width", str(args.width), "--height", str(args.height),
+            "--map-resolution", str(args.map_resolution), "--rays-per-texel", rays, "--max-depth", depth,
+            "--aov", "caustics", "--no-filter", "--exposure", str(args.exposure), "--out", path]
+
+
+def frames(frames_dir):
+    """(name, path, rays, depth) of every frame of both rows."""
+    return ([(f"rays_{r}", os.path.join(frames_dir, f"rays_{r}.png"), r, "4") for r in RAYS] +
+            [(f"depth_{d}", os.path.join(frames_dir, f"depth_{d}.png"), "1", d) for d in DEPTHS])
+
+
+def render(args, path, rays, depth):
+    import matplotlib.image as mpimg
+    if args.compose_only:
+        if not os.path.exists(path):
+            sys.exit(f"render_figure_rows: --compose-only: {path} is missing (run the --print-commands lines first)")
+        return mpimg.imread(path)[:, :, :3]
+    cmd = sample_command(args, path, rays, depth)
     result = subprocess.run(cmd, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"render_figure_rows: {' '.join(cmd)} failed:\n{result.stderr}")
@@ -38,16 +49,27 @@ def render(args, frames_dir, name, rays, depth):
 
 
 def crop_box(image):
+    import numpy as np
     lum = image.mean(axis=2)
-    ys, xs = np.nonzero(lum > 0.02 * max(lum.max(), 1e-12))
-    if len(xs) == 0:
+    total = lum.sum()
+    if total <= 0:
         return 0, image.shape[0], 0, image.shape[1]
-    pad_y, pad_x = max(4, (ys.max() - ys.min()) // 10), max(4, (xs.max() - xs.min()) // 10)
-    return (max(0, ys.min() - pad_y), min(image.shape[0], ys.max() + pad_y + 1),
-            max(0, xs.min() - pad_x), min(image.shape[1], xs.max() + pad_x + 1))
+
+    def span(profile):   # the rows (columns) between 2.5 % and 97.5 % of the light: stray photons stay out
+        c = np.cumsum(profile) / total
+        return int(np.searchsorted(c, 0.025)), int(np.searchsorted(c, 0.975))
+
+    y0, y1 = span(lum.sum(axis=1))
+    x0, x1 = span(lum.sum(axis=0))
+    pad_y, pad_x = max(4, (y1 - y0) // 5), max(4, (x1 - x0) // 5)
+    return (max(0, y0 - pad_y), min(image.shape[0], y1 + pad_y + 1),
+            max(0, x0 - pad_x), min(image.shape[1], x1 + pad_x + 1))
 
 
 def write_row(images, labels, box, title, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
     y0, y1, x0, x1 = box
     fig, axes = plt.subplots(1, len(images), figsize=(2.2 * len(images), 2.6))
     for ax, img, label in zip(axes, images, labels):
@@ -63,7 +85,10 @@ def write_row(images, labels, box, title, path):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--sample", required=True, help="path of the caustics-sponza executable")
+    p.add_argument("--sample", default="build/bin/caustics-sponza", help="path of the caustics-sponza executable")
+    p.add_argument("--print-commands", action="store_true",
+                   help="print the sample's command lines (one per frame, into OUT/frames) and exit")
+    p.add_argument("--compose-only", action="store_true", help="make the rows from the frames already in OUT/frames")
     p.add_argument("--out", required=True)
     p.add_argument("--scene", default="builtin:atrium")
     p.add_argument("--width", type=int, default=1920)
@@ -72,9 +97,14 @@ def main():
     p.add_argument("--exposure", type=float, default=1.0)
     args = p.parse_args()
     frames_dir = os.path.join(args.out, "frames")
+    if args.print_commands:
+        print(f"mkdir -p {shlex.quote(frames_dir)}")
+        for _, path, rays, depth in frames(frames_dir):
+            print(shlex.join(sample_command(args, path, rays, depth)))
+        return
     os.makedirs(frames_dir, exist_ok=True)
-    rays = [render(args, frames_dir, f"rays_{r}", r, "4") for r in RAYS]
-    depths = [render(args, frames_dir, f"depth_{d}", "1", d) for d in DEPTHS]
+    images = [render(args, path, rays, depth) for _, path, rays, depth in frames(frames_dir)]
+    rays, depths = images[:len(RAYS)], images[len(RAYS):]
     box = crop_box(rays[-1])
     write_row(rays, [f"{r} rays/texel" for r in RAYS], box, f"{args.scene}: caustics vs rays per texel (depth 4)",
               os.path.join(args.out, "figure10_rays_per_texel.png"))
