@@ -38,7 +38,7 @@ VkShaderStageFlags toVkShaderStages(ShaderStage stages) {
 // ---- DescriptorAllocator ----
 
 DescriptorAllocator::~DescriptorAllocator() {
-    for (VkDescriptorPool p : pools_) vkDestroyDescriptorPool(context_.device, p, nullptr);
+    for (VkDescriptorPool p : pools_) context_.fn.vkDestroyDescriptorPool(context_.device, p, nullptr);
 }
 
 Result<VkDescriptorPool> DescriptorAllocator::newPool() {
@@ -56,7 +56,7 @@ Result<VkDescriptorPool> DescriptorAllocator::newPool() {
     info.poolSizeCount = uint32_t(sizes.size());
     info.pPoolSizes = sizes.data();
     VkDescriptorPool pool = VK_NULL_HANDLE;
-    VkResult r = vkCreateDescriptorPool(context_.device, &info, nullptr, &pool);
+    VkResult r = context_.fn.vkCreateDescriptorPool(context_.device, &info, nullptr, &pool);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateDescriptorPool");
     pools_.push_back(pool);
     return pool;
@@ -70,7 +70,7 @@ Result<VkDescriptorSet> DescriptorAllocator::allocate(VkDescriptorSetLayout layo
     VkDescriptorSet set = VK_NULL_HANDLE;
     for (size_t i = pools_.size(); i-- > 0;) {
         info.descriptorPool = pools_[i];
-        if (vkAllocateDescriptorSets(context_.device, &info, &set) == VK_SUCCESS) {
+        if (context_.fn.vkAllocateDescriptorSets(context_.device, &info, &set) == VK_SUCCESS) {
             poolOut = pools_[i];
             return set;
         }
@@ -78,7 +78,7 @@ Result<VkDescriptorSet> DescriptorAllocator::allocate(VkDescriptorSetLayout layo
     auto pool = newPool();
     if (!pool) return pool.error();
     info.descriptorPool = pool.value();
-    VkResult r = vkAllocateDescriptorSets(context_.device, &info, &set);
+    VkResult r = context_.fn.vkAllocateDescriptorSets(context_.device, &info, &set);
     if (r != VK_SUCCESS) return vkError(r, "vkAllocateDescriptorSets");
     poolOut = pool.value();
     return set;
@@ -86,7 +86,7 @@ Result<VkDescriptorSet> DescriptorAllocator::allocate(VkDescriptorSetLayout layo
 
 void DescriptorAllocator::free(VkDescriptorPool pool, VkDescriptorSet set) {
     std::lock_guard lock(mutex_);
-    vkFreeDescriptorSets(context_.device, pool, 1, &set);
+    context_.fn.vkFreeDescriptorSets(context_.device, pool, 1, &set);
 }
 
 // ---- VulkanBindingLayout ----
@@ -118,7 +118,7 @@ Result<std::shared_ptr<VulkanBindingLayout>> VulkanBindingLayout::create(const C
     info.pNext = &flagsInfo;
     info.bindingCount = uint32_t(bindings.size());
     info.pBindings = bindings.data();
-    VkResult r = vkCreateDescriptorSetLayout(context->device, &info, nullptr, &layout->layout_);
+    VkResult r = context->fn.vkCreateDescriptorSetLayout(context->device, &info, nullptr, &layout->layout_);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateDescriptorSetLayout");
     return layout;
 }
@@ -126,7 +126,7 @@ Result<std::shared_ptr<VulkanBindingLayout>> VulkanBindingLayout::create(const C
 VulkanBindingLayout::~VulkanBindingLayout() {
     ContextPtr ctx = context_;
     VkDescriptorSetLayout l = layout_;
-    ctx->deferDestroy([ctx, l] { vkDestroyDescriptorSetLayout(ctx->device, l, nullptr); });
+    ctx->deferDestroy([ctx, l] { ctx->fn.vkDestroyDescriptorSetLayout(ctx->device, l, nullptr); });
 }
 
 // ---- VulkanBindingSet ----
@@ -192,7 +192,7 @@ Result<std::shared_ptr<VulkanBindingSet>> VulkanBindingSet::create(const Context
                 break;
         }
     }
-    vkUpdateDescriptorSets(context->device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+    context->fn.vkUpdateDescriptorSets(context->device, uint32_t(writes.size()), writes.data(), 0, nullptr);
     return set;
 }
 

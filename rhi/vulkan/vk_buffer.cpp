@@ -38,7 +38,7 @@ Result<std::shared_ptr<VulkanBuffer>> VulkanBuffer::create(const ContextPtr& con
                                           VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR);
     if (!ctx.capabilities.rayTracingPipeline) info.usage &= ~VkBufferUsageFlags(VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR);
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VkResult r = vkCreateBuffer(ctx.device, &info, nullptr, &buffer->buffer_);
+    VkResult r = ctx.fn.vkCreateBuffer(ctx.device, &info, nullptr, &buffer->buffer_);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateBuffer", desc.debugName);
     ctx.setName(VK_OBJECT_TYPE_BUFFER, buffer->buffer_, desc.debugName);
     if (desc.isVirtual) return buffer;
@@ -46,7 +46,7 @@ Result<std::shared_ptr<VulkanBuffer>> VulkanBuffer::create(const ContextPtr& con
     auto allocation = ctx.allocator->allocate(buffer->requirements(), desc.memory, false, desc.debugName);
     if (!allocation) return allocation.error();
     buffer->allocation_ = allocation.value();
-    r = vkBindBufferMemory(ctx.device, buffer->buffer_, buffer->allocation_.memory, buffer->allocation_.offset);
+    r = ctx.fn.vkBindBufferMemory(ctx.device, buffer->buffer_, buffer->allocation_.memory, buffer->allocation_.offset);
     if (r != VK_SUCCESS) return vkError(r, "vkBindBufferMemory", desc.debugName);
     buffer->mapped_ = buffer->allocation_.mapped;
     buffer->queryAddress();
@@ -67,19 +67,19 @@ VulkanBuffer::~VulkanBuffer() {
     VkBuffer buffer = ownsBuffer_ ? buffer_ : VK_NULL_HANDLE;
     MemoryAllocation allocation = allocation_;
     ctx->deferDestroy([ctx, buffer, allocation] {
-        if (buffer != VK_NULL_HANDLE) vkDestroyBuffer(ctx->device, buffer, nullptr);
+        if (buffer != VK_NULL_HANDLE) ctx->fn.vkDestroyBuffer(ctx->device, buffer, nullptr);
         ctx->allocator->free(allocation);
     });
 }
 
 VkMemoryRequirements VulkanBuffer::requirements() const {
     VkMemoryRequirements req{};
-    vkGetBufferMemoryRequirements(context_->device, buffer_, &req);
+    context_->fn.vkGetBufferMemoryRequirements(context_->device, buffer_, &req);
     return req;
 }
 
 Status VulkanBuffer::bindMemory(VkDeviceMemory memory, uint64_t offset, void* mapped) {
-    VkResult r = vkBindBufferMemory(context_->device, buffer_, memory, offset);
+    VkResult r = context_->fn.vkBindBufferMemory(context_->device, buffer_, memory, offset);
     if (r != VK_SUCCESS) return vkError(r, "vkBindBufferMemory", desc_.debugName);
     mapped_ = mapped;
     queryAddress();
@@ -90,7 +90,7 @@ void VulkanBuffer::queryAddress() {
     if (!(toVkBufferUsage(desc_.usage) & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)) return;
     VkBufferDeviceAddressInfo info{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
     info.buffer = buffer_;
-    deviceAddress_ = vkGetBufferDeviceAddress(context_->device, &info);
+    deviceAddress_ = context_->fn.vkGetBufferDeviceAddress(context_->device, &info);
 }
 
 }  // namespace caustics::rhi::vulkan

@@ -19,13 +19,13 @@ Result<std::shared_ptr<VulkanCommandList>> VulkanCommandList::create(VulkanDevic
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     poolInfo.queueFamilyIndex = ctx.queueFamily;
-    VkResult r = vkCreateCommandPool(ctx.device, &poolInfo, nullptr, &list->pool_);
+    VkResult r = ctx.fn.vkCreateCommandPool(ctx.device, &poolInfo, nullptr, &list->pool_);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateCommandPool");
     VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     info.commandPool = list->pool_;
     info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     info.commandBufferCount = 1;
-    r = vkAllocateCommandBuffers(ctx.device, &info, &list->commandBuffer_);
+    r = ctx.fn.vkAllocateCommandBuffers(ctx.device, &info, &list->commandBuffer_);
     if (r != VK_SUCCESS) return vkError(r, "vkAllocateCommandBuffers");
     return list;
 }
@@ -37,7 +37,7 @@ VulkanCommandList::~VulkanCommandList() {
     auto transients = std::make_shared<std::vector<BufferHandle>>(std::move(transients_));
     auto retained = std::make_shared<std::vector<std::shared_ptr<const void>>>(std::move(retained_));
     ctx->deferDestroy([ctx, pool, transients, retained] {
-        if (pool != VK_NULL_HANDLE) vkDestroyCommandPool(ctx->device, pool, nullptr);
+        if (pool != VK_NULL_HANDLE) ctx->fn.vkDestroyCommandPool(ctx->device, pool, nullptr);
         transients->clear();
         retained->clear();
     });
@@ -49,7 +49,7 @@ void VulkanCommandList::releaseResources() {
         wait.semaphoreCount = 1;
         wait.pSemaphores = &context_->timeline;
         wait.pValues = &submittedFence_;
-        vkWaitSemaphores(context_->device, &wait, UINT64_MAX);
+        context_->fn.vkWaitSemaphores(context_->device, &wait, UINT64_MAX);
     }
     transients_.clear();
     retained_.clear();
@@ -76,10 +76,10 @@ void VulkanCommandList::begin() {
         recording_ = true;
         return;
     }
-    vkResetCommandBuffer(commandBuffer_, 0);
+    context_->fn.vkResetCommandBuffer(commandBuffer_, 0);
     VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    VkResult r = vkBeginCommandBuffer(commandBuffer_, &info);
+    VkResult r = context_->fn.vkBeginCommandBuffer(commandBuffer_, &info);
     if (r != VK_SUCCESS) recordError(vkError(r, "vkBeginCommandBuffer").message);
     recording_ = true;
 }
@@ -89,7 +89,7 @@ void VulkanCommandList::end() {
         recording_ = false;
         return;
     }
-    VkResult r = vkEndCommandBuffer(commandBuffer_);
+    VkResult r = context_->fn.vkEndCommandBuffer(commandBuffer_);
     if (r != VK_SUCCESS) recordError(vkError(r, "vkEndCommandBuffer").message);
     recording_ = false;
 }
@@ -196,17 +196,17 @@ void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::
     dep.pBufferMemoryBarriers = bufs.data();
     dep.imageMemoryBarrierCount = uint32_t(images.size());
     dep.pImageMemoryBarriers = images.data();
-    vkCmdPipelineBarrier2(commandBuffer_, &dep);
+    context_->fn.vkCmdPipelineBarrier2(commandBuffer_, &dep);
 }
 
 void VulkanCommandList::setComputePipeline(const ComputePipelineHandle& pipeline) {
     VulkanComputePipeline* p = toVk(pipeline);
-    vkCmdBindPipeline(commandBuffer_, VK_PIPELINE_BIND_POINT_COMPUTE, p->pipeline());
+    context_->fn.vkCmdBindPipeline(commandBuffer_, VK_PIPELINE_BIND_POINT_COMPUTE, p->pipeline());
     bindPipelineLayout(p->layout(), VK_PIPELINE_BIND_POINT_COMPUTE);
     retain(pipeline);
 }
 
-void VulkanCommandList::dispatch(uint32_t x, uint32_t y, uint32_t z) { vkCmdDispatch(commandBuffer_, x, y, z); }
+void VulkanCommandList::dispatch(uint32_t x, uint32_t y, uint32_t z) { context_->fn.vkCmdDispatch(commandBuffer_, x, y, z); }
 
 void VulkanCommandList::setBindingSet(uint32_t index, const BindingSetHandle& set) {
     if (boundLayout_ == VK_NULL_HANDLE) {
@@ -214,7 +214,7 @@ void VulkanCommandList::setBindingSet(uint32_t index, const BindingSetHandle& se
         return;
     }
     VkDescriptorSet s = toVk(set)->handle();
-    vkCmdBindDescriptorSets(commandBuffer_, boundBindPoint_, boundLayout_, index, 1, &s, 0, nullptr);
+    context_->fn.vkCmdBindDescriptorSets(commandBuffer_, boundBindPoint_, boundLayout_, index, 1, &s, 0, nullptr);
     retain(set);
 }
 
@@ -223,18 +223,18 @@ void VulkanCommandList::setPushConstants(const void* data, uint32_t bytes) {
         recordError("vulkan: setPushConstants before any pipeline was set");
         return;
     }
-    vkCmdPushConstants(commandBuffer_, boundLayout_, VK_SHADER_STAGE_ALL, 0, bytes, data);
+    context_->fn.vkCmdPushConstants(commandBuffer_, boundLayout_, VK_SHADER_STAGE_ALL, 0, bytes, data);
 }
 
 void VulkanCommandList::resetTimestamps(const TimestampPoolHandle& pool, uint32_t first, uint32_t count) {
     if (!timestampsAllowed_) return;
-    vkCmdResetQueryPool(commandBuffer_, toVk(pool)->handle(), first, count);
+    context_->fn.vkCmdResetQueryPool(commandBuffer_, toVk(pool)->handle(), first, count);
     retain(pool);
 }
 
 void VulkanCommandList::writeTimestamp(const TimestampPoolHandle& pool, uint32_t index) {
     if (!timestampsAllowed_) return;
-    vkCmdWriteTimestamp2(commandBuffer_, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, toVk(pool)->handle(), index);
+    context_->fn.vkCmdWriteTimestamp2(commandBuffer_, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, toVk(pool)->handle(), index);
     retain(pool);
 }
 

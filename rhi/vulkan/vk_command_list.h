@@ -75,6 +75,7 @@ public:
     void setBindingSet(uint32_t index, const BindingSetHandle& set) override;
     void setPushConstants(const void* data, uint32_t bytes) override;
 
+    bool recordsTimestamps() const override { return timestampsAllowed_; }
     void resetTimestamps(const TimestampPoolHandle& pool, uint32_t first, uint32_t count) override;
     void writeTimestamp(const TimestampPoolHandle& pool, uint32_t index) override;
     void beginMarker(std::string_view name) override;

@@ -37,45 +37,45 @@ void VulkanCommandList::beginRendering(const RenderingDesc& desc) {
     info.colorAttachmentCount = uint32_t(colors.size());
     info.pColorAttachments = colors.data();
     info.pDepthAttachment = desc.depth.texture ? &depth : nullptr;
-    vkCmdBeginRendering(commandBuffer_, &info);
+    context().fn.vkCmdBeginRendering(commandBuffer_, &info);
 }
 
-void VulkanCommandList::endRendering() { vkCmdEndRendering(commandBuffer_); }
+void VulkanCommandList::endRendering() { context().fn.vkCmdEndRendering(commandBuffer_); }
 
 void VulkanCommandList::setGraphicsPipeline(const GraphicsPipelineHandle& pipeline) {
     VulkanGraphicsPipeline* p = toVk(pipeline);
-    vkCmdBindPipeline(commandBuffer_, VK_PIPELINE_BIND_POINT_GRAPHICS, p->pipeline());
+    context().fn.vkCmdBindPipeline(commandBuffer_, VK_PIPELINE_BIND_POINT_GRAPHICS, p->pipeline());
     bindPipelineLayout(p->layout(), VK_PIPELINE_BIND_POINT_GRAPHICS);
     retain(pipeline);
 }
 
 void VulkanCommandList::setViewport(float x, float y, float width, float height) {
     VkViewport viewport{x, y, width, height, 0.0f, 1.0f};
-    vkCmdSetViewport(commandBuffer_, 0, 1, &viewport);
+    context().fn.vkCmdSetViewport(commandBuffer_, 0, 1, &viewport);
     VkRect2D scissor{{int32_t(x), int32_t(y)}, {uint32_t(width), uint32_t(height)}};
-    vkCmdSetScissor(commandBuffer_, 0, 1, &scissor);
+    context().fn.vkCmdSetScissor(commandBuffer_, 0, 1, &scissor);
 }
 
 void VulkanCommandList::setVertexBuffer(uint32_t slot, const BufferHandle& buffer, uint64_t offset) {
     VkBuffer b = toVk(buffer)->handle();
     VkDeviceSize o = offset;
-    vkCmdBindVertexBuffers(commandBuffer_, slot, 1, &b, &o);
+    context().fn.vkCmdBindVertexBuffers(commandBuffer_, slot, 1, &b, &o);
     retain(buffer);
 }
 
 void VulkanCommandList::setIndexBuffer(const BufferHandle& buffer, uint64_t offset) {
-    vkCmdBindIndexBuffer(commandBuffer_, toVk(buffer)->handle(), offset, VK_INDEX_TYPE_UINT32);
+    context().fn.vkCmdBindIndexBuffer(commandBuffer_, toVk(buffer)->handle(), offset, VK_INDEX_TYPE_UINT32);
     retain(buffer);
 }
 
 void VulkanCommandList::draw(uint32_t vertexCount, uint32_t instanceCount, uint32_t firstVertex,
                              uint32_t firstInstance) {
-    vkCmdDraw(commandBuffer_, vertexCount, instanceCount, firstVertex, firstInstance);
+    context().fn.vkCmdDraw(commandBuffer_, vertexCount, instanceCount, firstVertex, firstInstance);
 }
 
 void VulkanCommandList::drawIndexed(uint32_t indexCount, uint32_t instanceCount, uint32_t firstIndex,
                                     int32_t vertexOffset, uint32_t firstInstance) {
-    vkCmdDrawIndexed(commandBuffer_, indexCount, instanceCount, firstIndex, vertexOffset, firstInstance);
+    context().fn.vkCmdDrawIndexed(commandBuffer_, indexCount, instanceCount, firstIndex, vertexOffset, firstInstance);
 }
 
 }  // namespace caustics::rhi::vulkan

@@ -62,7 +62,7 @@ void VulkanCommandList::setRayTracingState(const StateObjectHandle& stateObject,
         return;
     }
     VulkanStateObject& so = *toVk(stateObject);
-    vkCmdBindPipeline(commandBuffer(), VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, so.pipeline());
+    context().fn.vkCmdBindPipeline(commandBuffer(), VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, so.pipeline());
     bindPipelineLayout(so.layout(), VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR);
     rayTracingState() = {stateObject, table};
     retain(stateObject);

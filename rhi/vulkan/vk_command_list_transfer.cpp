@@ -18,7 +18,7 @@ void VulkanCommandList::writeBuffer(const BufferHandle& dst, const void* data, u
     VulkanBuffer* d = toVk(dst);
     retain(dst);
     if (bytes <= kInlineUpdateLimit && bytes % 4 == 0 && dstOffset % 4 == 0) {
-        vkCmdUpdateBuffer(commandBuffer_, d->handle(), dstOffset, bytes, data);
+        context().fn.vkCmdUpdateBuffer(commandBuffer_, d->handle(), dstOffset, bytes, data);
         return;
     }
     BufferHandle staging = allocateTransient(BufferDesc()
@@ -29,21 +29,21 @@ void VulkanCommandList::writeBuffer(const BufferHandle& dst, const void* data, u
     if (!staging) return;
     std::memcpy(staging->mappedData(), data, bytes);
     VkBufferCopy region{0, dstOffset, bytes};
-    vkCmdCopyBuffer(commandBuffer_, toVk(staging)->handle(), d->handle(), 1, &region);
+    context().fn.vkCmdCopyBuffer(commandBuffer_, toVk(staging)->handle(), d->handle(), 1, &region);
 }
 
 void VulkanCommandList::copyBuffer(const BufferHandle& dst, uint64_t dstOffset, const BufferHandle& src,
                                    uint64_t srcOffset, uint64_t bytes) {
     if (bytes == 0) return;
     VkBufferCopy region{srcOffset, dstOffset, bytes};
-    vkCmdCopyBuffer(commandBuffer_, toVk(src)->handle(), toVk(dst)->handle(), 1, &region);
+    context().fn.vkCmdCopyBuffer(commandBuffer_, toVk(src)->handle(), toVk(dst)->handle(), 1, &region);
     retain(dst);
     retain(src);
 }
 
 void VulkanCommandList::fillBuffer(const BufferHandle& dst, uint32_t value, uint64_t offset, uint64_t bytes) {
     // ~0ull = to the end; Vulkan rounds VK_WHOLE_SIZE down to a multiple of 4 itself.
-    vkCmdFillBuffer(commandBuffer_, toVk(dst)->handle(), offset, bytes == ~0ull ? VK_WHOLE_SIZE : bytes, value);
+    context().fn.vkCmdFillBuffer(commandBuffer_, toVk(dst)->handle(), offset, bytes == ~0ull ? VK_WHOLE_SIZE : bytes, value);
     retain(dst);
 }
 
@@ -80,7 +80,7 @@ void VulkanCommandList::writeTexture(const TextureHandle& dst, uint32_t layer, u
     if (!staging) return;
     std::memcpy(staging->mappedData(), data, expected);
     VkBufferImageCopy region = textureRegion(*t, layer, mip, 0);
-    vkCmdCopyBufferToImage(commandBuffer_, toVk(staging)->handle(), t->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+    context().fn.vkCmdCopyBufferToImage(commandBuffer_, toVk(staging)->handle(), t->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                            1, &region);
     retain(dst);
 }
@@ -89,7 +89,7 @@ void VulkanCommandList::copyTextureToBuffer(const BufferHandle& dst, uint64_t ds
                                             uint32_t layer, uint32_t mip) {
     VulkanTexture* t = toVk(src);
     VkBufferImageCopy region = textureRegion(*t, layer, mip, dstOffset);
-    vkCmdCopyImageToBuffer(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, toVk(dst)->handle(), 1,
+    context().fn.vkCmdCopyImageToBuffer(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, toVk(dst)->handle(), 1,
                            &region);
     retain(dst);
     retain(src);
@@ -111,7 +111,7 @@ void VulkanCommandList::copyTexture(const TextureHandle& dst, const TextureRegio
     region.dstSubresource = {copyAspect(*d), dstRegion.mip, dstRegion.layer, 1};
     region.dstOffset = {int32_t(dstRegion.x), int32_t(dstRegion.y), 0};
     region.extent = {extent->width, extent->height, 1};
-    vkCmdCopyImage(commandBuffer_, s->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d->handle(),
+    context().fn.vkCmdCopyImage(commandBuffer_, s->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d->handle(),
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
     retain(dst);
     retain(src);
@@ -122,12 +122,12 @@ void VulkanCommandList::clearTextureFloat(const TextureHandle& texture, const fl
     VkImageSubresourceRange range{t->aspect(), 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
     if (formatInfo(t->desc().format).isDepth) {
         VkClearDepthStencilValue clear{value[0], 0};
-        vkCmdClearDepthStencilImage(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1,
+        context().fn.vkCmdClearDepthStencilImage(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1,
                                     &range);
     } else {
         VkClearColorValue clear{};
         std::memcpy(clear.float32, value, sizeof(clear.float32));
-        vkCmdClearColorImage(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1, &range);
+        context().fn.vkCmdClearColorImage(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1, &range);
     }
     retain(texture);
 }
@@ -138,7 +138,7 @@ void VulkanCommandList::clearTextureUint(const TextureHandle& texture, const uin
     // Integer formats take the bits as uint32; float formats take the same bits reinterpreted.
     VkClearColorValue clear{};
     std::memcpy(clear.uint32, value, sizeof(clear.uint32));
-    vkCmdClearColorImage(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1, &range);
+    context().fn.vkCmdClearColorImage(commandBuffer_, t->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1, &range);
     retain(texture);
 }
 

@@ -15,13 +15,13 @@ VulkanContext::~VulkanContext() {
         collectGarbage(true);
         descriptors.reset();
         allocator.reset();
-        if (timeline != VK_NULL_HANDLE) vkDestroySemaphore(device, timeline, nullptr);
-        if (ownsDevice) vkDestroyDevice(device, nullptr);
+        if (timeline != VK_NULL_HANDLE) fn.vkDestroySemaphore(device, timeline, nullptr);
+        if (ownsDevice) fn.vkDestroyDevice(device, nullptr);
     }
     if (!ownsDevice) return;
     if (messenger != VK_NULL_HANDLE && fn.vkDestroyDebugUtilsMessengerEXT)
         fn.vkDestroyDebugUtilsMessengerEXT(instance, messenger, nullptr);
-    if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
+    if (instance != VK_NULL_HANDLE) fn.vkDestroyInstance(instance, nullptr);
 }
 
 void VulkanContext::setName(VkObjectType type, uint64_t handle, std::string_view name) const {
@@ -36,14 +36,14 @@ void VulkanContext::setName(VkObjectType type, uint64_t handle, std::string_view
 
 uint64_t VulkanContext::completedValue() const {
     uint64_t value = 0;
-    if (timeline != VK_NULL_HANDLE) vkGetSemaphoreCounterValue(device, timeline, &value);
+    if (timeline != VK_NULL_HANDLE) fn.vkGetSemaphoreCounterValue(device, timeline, &value);
     return value;
 }
 
 void VulkanContext::waitForKnownWork() {
     if (device == VK_NULL_HANDLE) return;
     if (ownsDevice) {
-        vkDeviceWaitIdle(device);
+        fn.vkDeviceWaitIdle(device);
         return;
     }
     if (timeline == VK_NULL_HANDLE) return;
@@ -56,7 +56,7 @@ void VulkanContext::waitForKnownWork() {
     wait.semaphoreCount = 1;
     wait.pSemaphores = &timeline;
     wait.pValues = &value;
-    vkWaitSemaphores(device, &wait, UINT64_MAX);
+    fn.vkWaitSemaphores(device, &wait, UINT64_MAX);
 }
 
 void VulkanContext::deferDestroy(std::function<void()> destroy) {

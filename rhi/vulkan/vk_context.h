@@ -1,5 +1,5 @@
 #pragma once
-// Shared state of one Vulkan device: handles, properties, capabilities and the extension entry points.
+// Shared state of one Vulkan device: handles, properties, capabilities and its entry points (vk_dispatch.h).
 // Every backend object holds a std::shared_ptr<VulkanContext>, so the VkDevice outlives its objects.
 #include <vulkan/vulkan.h>
 
@@ -12,41 +12,12 @@
 #include <vector>
 
 #include "caustics/rhi/device.h"
+#include "vk_dispatch.h"
 
 namespace caustics::rhi::vulkan {
 
 class MemoryAllocator;
 class DescriptorAllocator;
-
-// Extension entry points, loaded with vkGetDeviceProcAddr/vkGetInstanceProcAddr so the library has no
-// link-time dependency on them. A pointer is null when its extension is not enabled.
-struct VulkanDispatch {
-    // VK_KHR_acceleration_structure
-    PFN_vkCreateAccelerationStructureKHR vkCreateAccelerationStructureKHR = nullptr;
-    PFN_vkDestroyAccelerationStructureKHR vkDestroyAccelerationStructureKHR = nullptr;
-    PFN_vkGetAccelerationStructureBuildSizesKHR vkGetAccelerationStructureBuildSizesKHR = nullptr;
-    PFN_vkCmdBuildAccelerationStructuresKHR vkCmdBuildAccelerationStructuresKHR = nullptr;
-    PFN_vkGetAccelerationStructureDeviceAddressKHR vkGetAccelerationStructureDeviceAddressKHR = nullptr;
-    PFN_vkCmdWriteAccelerationStructuresPropertiesKHR vkCmdWriteAccelerationStructuresPropertiesKHR = nullptr;
-    PFN_vkCmdCopyAccelerationStructureKHR vkCmdCopyAccelerationStructureKHR = nullptr;
-    // VK_KHR_ray_tracing_pipeline
-    PFN_vkCreateRayTracingPipelinesKHR vkCreateRayTracingPipelinesKHR = nullptr;
-    PFN_vkGetRayTracingShaderGroupHandlesKHR vkGetRayTracingShaderGroupHandlesKHR = nullptr;
-    PFN_vkCmdTraceRaysKHR vkCmdTraceRaysKHR = nullptr;
-    PFN_vkCmdTraceRaysIndirectKHR vkCmdTraceRaysIndirectKHR = nullptr;
-    // VK_EXT_debug_utils (instance extension; null without it)
-    PFN_vkSetDebugUtilsObjectNameEXT vkSetDebugUtilsObjectNameEXT = nullptr;
-    PFN_vkCmdBeginDebugUtilsLabelEXT vkCmdBeginDebugUtilsLabelEXT = nullptr;
-    PFN_vkCmdEndDebugUtilsLabelEXT vkCmdEndDebugUtilsLabelEXT = nullptr;
-    PFN_vkCreateDebugUtilsMessengerEXT vkCreateDebugUtilsMessengerEXT = nullptr;
-    PFN_vkDestroyDebugUtilsMessengerEXT vkDestroyDebugUtilsMessengerEXT = nullptr;
-    // Dynamic rendering and synchronization2 are core in Vulkan 1.3 (the instance asks for 1.3), so
-    // vkCmdBeginRendering / vkCmdPipelineBarrier2 are linked from the loader; these are the same
-    // entry points fetched through the device for a lower dispatch cost.
-    PFN_vkCmdBeginRendering vkCmdBeginRendering = nullptr;
-    PFN_vkCmdEndRendering vkCmdEndRendering = nullptr;
-    PFN_vkCmdPipelineBarrier2 vkCmdPipelineBarrier2 = nullptr;
-};
 
 struct VulkanContext {
     VkInstance instance = VK_NULL_HANDLE;
@@ -66,7 +37,7 @@ struct VulkanContext {
     VkPhysicalDeviceAccelerationStructurePropertiesKHR accelStructProperties{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
     Capabilities capabilities;
-    VulkanDispatch fn;
+    VulkanDispatch fn;   // every call of the backend goes through it
 
     std::unique_ptr<MemoryAllocator> allocator;          // see vk_memory.h
     std::unique_ptr<DescriptorAllocator> descriptors;    // see vk_binding.h

@@ -17,10 +17,8 @@ bool forceFixedPointAccumulation() {
 
 }  // namespace
 
-Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts,
-                         PFN_vkGetDeviceProcAddr getDeviceProcAddr) {
-    auto load = [&](const char* name) { return getDeviceProcAddr(context.device, name); };
-    vkGetPhysicalDeviceMemoryProperties(context.physicalDevice, &context.memoryProperties);
+Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts) {
+    context.fn.vkGetPhysicalDeviceMemoryProperties(context.physicalDevice, &context.memoryProperties);
 
     VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
@@ -35,7 +33,7 @@ Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts
         context.rayTracingProperties.pNext = driver.pNext;
         driver.pNext = &context.rayTracingProperties;
     }
-    vkGetPhysicalDeviceProperties2(context.physicalDevice, &props);
+    context.fn.vkGetPhysicalDeviceProperties2(context.physicalDevice, &props);
     context.rayTracingProperties.pNext = nullptr;
     context.accelStructProperties.pNext = nullptr;
     context.properties = props.properties;
@@ -67,34 +65,13 @@ Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts
         if (context.memoryProperties.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
             caps.deviceMemoryBytes = std::max<uint64_t>(caps.deviceMemoryBytes, context.memoryProperties.memoryHeaps[h].size);
 
-    VulkanDispatch& fn = context.fn;
-    fn.vkCmdBeginRendering = reinterpret_cast<PFN_vkCmdBeginRendering>(load("vkCmdBeginRendering"));
-    fn.vkCmdEndRendering = reinterpret_cast<PFN_vkCmdEndRendering>(load("vkCmdEndRendering"));
-    fn.vkCmdPipelineBarrier2 = reinterpret_cast<PFN_vkCmdPipelineBarrier2>(load("vkCmdPipelineBarrier2"));
-    if (parts.accelStruct) {
-#define CAUSTICS_LOAD(name) fn.name = reinterpret_cast<PFN_##name>(load(#name))
-        CAUSTICS_LOAD(vkCreateAccelerationStructureKHR);
-        CAUSTICS_LOAD(vkDestroyAccelerationStructureKHR);
-        CAUSTICS_LOAD(vkGetAccelerationStructureBuildSizesKHR);
-        CAUSTICS_LOAD(vkCmdBuildAccelerationStructuresKHR);
-        CAUSTICS_LOAD(vkGetAccelerationStructureDeviceAddressKHR);
-        CAUSTICS_LOAD(vkCmdWriteAccelerationStructuresPropertiesKHR);
-        CAUSTICS_LOAD(vkCmdCopyAccelerationStructureKHR);
-    }
-    if (parts.rayTracingPipeline) {
-        CAUSTICS_LOAD(vkCreateRayTracingPipelinesKHR);
-        CAUSTICS_LOAD(vkGetRayTracingShaderGroupHandlesKHR);
-        CAUSTICS_LOAD(vkCmdTraceRaysKHR);
-        CAUSTICS_LOAD(vkCmdTraceRaysIndirectKHR);
-#undef CAUSTICS_LOAD
-    }
 
     VkSemaphoreTypeCreateInfo type{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
     type.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
     type.initialValue = 0;
     VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     semaphore.pNext = &type;
-    VkResult r = vkCreateSemaphore(context.device, &semaphore, nullptr, &context.timeline);
+    VkResult r = context.fn.vkCreateSemaphore(context.device, &semaphore, nullptr, &context.timeline);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateSemaphore (timeline)");
     context.setName(VK_OBJECT_TYPE_SEMAPHORE, context.timeline, "device fence");
     return okStatus();

@@ -1,7 +1,7 @@
 #pragma once
 // What every Vulkan device needs once a VkDevice exists, whether this backend created it
 // (vk_physical_device.cpp) or a host engine did (vk_device_wrap.cpp): properties, capabilities,
-// extension entry points and the timeline semaphore that serves as the device fence.
+// and the timeline semaphore that serves as the device fence.
 #include "vk_context.h"
 
 namespace caustics::rhi::vulkan {
@@ -15,9 +15,9 @@ struct EnabledDeviceParts {
     bool traceRaysIndirect = false;   // rayTracingPipelineTraceRaysIndirect
 };
 
-// Needs context.physicalDevice, device and queue set. `getDeviceProcAddr` loads the entry points:
-// the loader's for our own device, the host's (through its vkGetInstanceProcAddr) for a wrapped one.
-Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts,
-                         PFN_vkGetDeviceProcAddr getDeviceProcAddr);
+// Needs context.physicalDevice, device and queue set and context.fn loaded (vk_dispatch.h): the
+// loader's entry points for our own device, the host's (through its vkGetInstanceProcAddr) for a
+// wrapped one.
+Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts);
 
 }  // namespace caustics::rhi::vulkan

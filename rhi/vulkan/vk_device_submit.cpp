@@ -30,7 +30,7 @@ Result<uint64_t> VulkanDevice::submit(std::span<const CommandListHandle> lists) 
     info.pCommandBufferInfos = buffers.data();
     info.signalSemaphoreInfoCount = 1;
     info.pSignalSemaphoreInfos = &signal;
-    VkResult r = vkQueueSubmit2(context_->queue, 1, &info, VK_NULL_HANDLE);
+    VkResult r = context_->fn.vkQueueSubmit2(context_->queue, 1, &info, VK_NULL_HANDLE);
     if (r != VK_SUCCESS) return vkError(r, "vkQueueSubmit2");
     context_->lastSubmitted = value;
     for (const CommandListHandle& handle : lists) toVk(handle)->markSubmitted(value);
@@ -45,14 +45,14 @@ Status VulkanDevice::waitForFence(uint64_t value) {
     wait.semaphoreCount = 1;
     wait.pSemaphores = &context_->timeline;
     wait.pValues = &value;
-    VkResult r = vkWaitSemaphores(context_->device, &wait, UINT64_MAX);
+    VkResult r = context_->fn.vkWaitSemaphores(context_->device, &wait, UINT64_MAX);
     if (r != VK_SUCCESS) return vkError(r, "vkWaitSemaphores");
     context_->collectGarbage();
     return okStatus();
 }
 
 Status VulkanDevice::waitIdle() {
-    VkResult r = vkQueueWaitIdle(context_->queue);
+    VkResult r = context_->fn.vkQueueWaitIdle(context_->queue);
     if (r != VK_SUCCESS) return vkError(r, "vkQueueWaitIdle");
     context_->collectGarbage();
     return okStatus();
@@ -74,7 +74,7 @@ std::vector<std::optional<double>> VulkanDevice::readTimestamps(const TimestampP
     std::vector<std::optional<double>> out(count);
     if (count == 0) return out;
     std::vector<uint64_t> data(size_t(count) * 2);   // (value, availability) pairs
-    vkGetQueryPoolResults(context_->device, toVk(pool)->handle(), first, count, data.size() * sizeof(uint64_t),
+    context_->fn.vkGetQueryPoolResults(context_->device, toVk(pool)->handle(), first, count, data.size() * sizeof(uint64_t),
                           data.data(), 2 * sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
     for (uint32_t i = 0; i < count; ++i)
         if (data[2 * i + 1] != 0) out[i] = double(data[2 * i]) * context_->capabilities.timestampPeriodNs;

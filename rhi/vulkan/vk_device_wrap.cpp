@@ -32,39 +32,29 @@ Status checkHandles(const VulkanDeviceImport& d) {
 
 Result<DeviceHandle> wrapVulkanDevice(const VulkanDeviceImport& desc) {
     CAUSTICS_CHECK(checkHandles(desc));
+    auto has = [&](const std::vector<std::string>& list, const char* name) {
+        return std::find(list.begin(), list.end(), name) != list.end();
+    };
+    // Every call from here on goes through the host's vkGetInstanceProcAddr (vk_dispatch.h).
+    auto context = std::make_shared<vulkan::VulkanContext>();
+    context->ownsDevice = false;
+    const std::string who = "wrapVulkanDevice '" + desc.debugName + "'";
+    CAUSTICS_CHECK(vulkan::loadInstanceDispatch(context->fn, desc.getInstanceProcAddr, desc.instance,
+                                                has(desc.enabledInstanceExtensions, VK_EXT_DEBUG_UTILS_EXTENSION_NAME),
+                                                who + " (the host's vkGetInstanceProcAddr)"));
     VkPhysicalDeviceProperties props;
-    vkGetPhysicalDeviceProperties(desc.physicalDevice, &props);
+    context->fn.vkGetPhysicalDeviceProperties(desc.physicalDevice, &props);
     const VulkanEnabledFeatures features = readVulkanFeatureChain(desc.enabledFeatures);
     CAUSTICS_CHECK(checkVulkanDeviceRequirements(desc.apiVersion, desc.enabledExtensions, features,
                                                  desc.requireRayTracing,
                                                  desc.debugName + " on " + props.deviceName));
 
-    auto getDeviceProcAddr = reinterpret_cast<PFN_vkGetDeviceProcAddr>(
-        desc.getInstanceProcAddr(desc.instance, "vkGetDeviceProcAddr"));
-    if (!getDeviceProcAddr)
-        return makeError("vulkan: wrapVulkanDevice '" + desc.debugName +
-                         "': the host's vkGetInstanceProcAddr has no vkGetDeviceProcAddr");
-
-    auto context = std::make_shared<vulkan::VulkanContext>();
-    context->ownsDevice = false;
     context->instance = desc.instance;
     context->physicalDevice = desc.physicalDevice;
     context->device = desc.device;
     context->queue = desc.queue;
     context->queueFamily = desc.queueFamily;
 
-    auto has = [&](const std::vector<std::string>& list, const char* name) {
-        return std::find(list.begin(), list.end(), name) != list.end();
-    };
-    if (has(desc.enabledInstanceExtensions, VK_EXT_DEBUG_UTILS_EXTENSION_NAME)) {
-        auto get = [&](const char* name) { return desc.getInstanceProcAddr(desc.instance, name); };
-        context->fn.vkSetDebugUtilsObjectNameEXT =
-            reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(get("vkSetDebugUtilsObjectNameEXT"));
-        context->fn.vkCmdBeginDebugUtilsLabelEXT =
-            reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(get("vkCmdBeginDebugUtilsLabelEXT"));
-        context->fn.vkCmdEndDebugUtilsLabelEXT =
-            reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(get("vkCmdEndDebugUtilsLabelEXT"));
-    }
     const auto& ext = desc.enabledExtensions;
     vulkan::EnabledDeviceParts parts;
     parts.accelStruct = has(ext, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) && features.accelerationStructure;
@@ -74,7 +64,9 @@ Result<DeviceHandle> wrapVulkanDevice(const VulkanDeviceImport& desc) {
     parts.traceRaysIndirect = parts.rayTracingPipeline && features.rayTracingPipelineTraceRaysIndirect;
     parts.floatAtomicAdd = has(ext, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME) &&
                            features.shaderBufferFloat32AtomicAdd && features.shaderImageFloat32AtomicAdd;
-    CAUSTICS_CHECK(vulkan::finishDeviceSetup(*context, parts, getDeviceProcAddr));
+    CAUSTICS_CHECK(vulkan::loadDeviceDispatch(context->fn, context->device, parts.accelStruct, parts.rayTracingPipeline,
+                                              who + " (the host's vkGetDeviceProcAddr)"));
+    CAUSTICS_CHECK(vulkan::finishDeviceSetup(*context, parts));
     context->allocator = std::make_unique<vulkan::MemoryAllocator>(*context);
     context->descriptors = std::make_unique<vulkan::DescriptorAllocator>(*context);
     log(LogLevel::Info, "vulkan: wrapped the host's device '" + context->capabilities.adapterName + "'");

@@ -56,7 +56,7 @@ Result<std::shared_ptr<VulkanGraphicsPipeline>> VulkanGraphicsPipeline::create(c
         return okStatus();
     };
     auto destroyModules = [&] {
-        for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device, m, nullptr);
+        for (VkShaderModule m : modules) ctx.fn.vkDestroyShaderModule(ctx.device, m, nullptr);
     };
     Status vs = addStage(desc.vertexShader, VK_SHADER_STAGE_VERTEX_BIT);
     Status fs = desc.fragmentShader.stage != ShaderStage::None && !desc.fragmentShader.code.bytes.empty()
@@ -142,7 +142,7 @@ Result<std::shared_ptr<VulkanGraphicsPipeline>> VulkanGraphicsPipeline::create(c
     info.pColorBlendState = &blend;
     info.pDynamicState = &dynamic;
     info.layout = pipeline->layout_;
-    VkResult r = vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline->pipeline_);
+    VkResult r = ctx.fn.vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline->pipeline_);
     destroyModules();
     if (r != VK_SUCCESS) return vkError(r, "vkCreateGraphicsPipelines", desc.debugName);
     ctx.setName(VK_OBJECT_TYPE_PIPELINE, pipeline->pipeline_, desc.debugName);

@@ -102,18 +102,9 @@ Status createInstance(VulkanContext& context, const DeviceDesc& desc) {
     VkResult r = vkCreateInstance(&info, nullptr, &context.instance);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateInstance (Vulkan 1.3)");
 
+    // Every later call goes through context.fn, loaded through the loader's vkGetInstanceProcAddr.
+    CAUSTICS_CHECK(loadInstanceDispatch(context.fn, vkGetInstanceProcAddr, context.instance, debugUtils, "our instance"));
     if (debugUtils) {
-        auto get = [&](const char* name) { return vkGetInstanceProcAddr(context.instance, name); };
-        context.fn.vkCreateDebugUtilsMessengerEXT =
-            reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(get("vkCreateDebugUtilsMessengerEXT"));
-        context.fn.vkDestroyDebugUtilsMessengerEXT =
-            reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(get("vkDestroyDebugUtilsMessengerEXT"));
-        context.fn.vkSetDebugUtilsObjectNameEXT =
-            reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(get("vkSetDebugUtilsObjectNameEXT"));
-        context.fn.vkCmdBeginDebugUtilsLabelEXT =
-            reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(get("vkCmdBeginDebugUtilsLabelEXT"));
-        context.fn.vkCmdEndDebugUtilsLabelEXT =
-            reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(get("vkCmdEndDebugUtilsLabelEXT"));
         messenger.pNext = nullptr;
         if (context.fn.vkCreateDebugUtilsMessengerEXT)
             context.fn.vkCreateDebugUtilsMessengerEXT(context.instance, &messenger, nullptr, &context.messenger);

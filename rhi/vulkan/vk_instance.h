@@ -5,10 +5,10 @@
 
 namespace caustics::rhi::vulkan {
 
-// Creates context.instance (+ messenger) and loads the debug-utils entry points into context.fn.
+// Creates context.instance (+ messenger) and loads the instance-level entry points into context.fn.
 Status createInstance(VulkanContext& context, const DeviceDesc& desc);
 // Picks a physical device with everything `desc` needs, creates the VkDevice, queue, timeline
-// semaphore, fills properties/capabilities and loads the extension entry points.
+// semaphore, fills properties/capabilities and loads the device-level entry points.
 Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc);
 
 }  // namespace caustics::rhi::vulkan

@@ -91,7 +91,7 @@ Result<TextureHandle> importVulkanTexture(IDevice& device, const VulkanTextureIm
     if (!format) return makeError(what + ": VkFormat " + std::to_string(int(desc.format)) + " has no RHI format");
 
     VkFormatProperties formatProps{};
-    vkGetPhysicalDeviceFormatProperties(vk->context().physicalDevice, desc.format, &formatProps);
+    vk->context().fn.vkGetPhysicalDeviceFormatProperties(vk->context().physicalDevice, desc.format, &formatProps);
     std::vector<std::string> problems;
     for (const TextureUseRule& rule : kTextureRules) {
         if (!hasAny(desc.uses, rule.use)) continue;
@@ -138,7 +138,7 @@ Result<BufferHandle> importVulkanBuffer(IDevice& device, const VulkanBufferImpor
     if (address == 0 && hasAddress) {
         VkBufferDeviceAddressInfo info{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
         info.buffer = desc.buffer;
-        address = vkGetBufferDeviceAddress(vk->context().device, &info);
+        address = vk->context().fn.vkGetBufferDeviceAddress(vk->context().device, &info);
     }
     BufferDesc bd;
     bd.byteSize = desc.byteSize;

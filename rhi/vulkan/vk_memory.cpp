@@ -30,14 +30,14 @@ Result<VkDeviceMemory> allocateDeviceMemory(VulkanContext& context, uint64_t siz
     info.allocationSize = size;
     info.memoryTypeIndex = memoryType;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkResult r = vkAllocateMemory(context.device, &info, nullptr, &memory);
-    if (r != VK_SUCCESS) return vkError(r, "vkAllocateMemory(" + std::to_string(size) + " bytes)");
+    VkResult r = context.fn.vkAllocateMemory(context.device, &info, nullptr, &memory);
+    if (r != VK_SUCCESS) return vkError(r, "context_.fn.vkAllocateMemory(" + std::to_string(size) + " bytes)");
     return memory;
 }
 
 MemoryAllocator::~MemoryAllocator() {
     for (Block& b : blocks_)
-        if (b.memory != VK_NULL_HANDLE) vkFreeMemory(context_.device, b.memory, nullptr);
+        if (b.memory != VK_NULL_HANDLE) context_.fn.vkFreeMemory(context_.device, b.memory, nullptr);
 }
 
 uint32_t MemoryAllocator::findMemoryType(uint32_t typeBits, MemoryType memory) const {
@@ -59,9 +59,9 @@ Result<MemoryAllocation> MemoryAllocator::allocateDedicated(uint64_t size, uint3
     a.size = size;
     a.memoryType = memoryType;
     if (hostVisible) {
-        VkResult r = vkMapMemory(context_.device, a.memory, 0, VK_WHOLE_SIZE, 0, &a.mapped);
+        VkResult r = context_.fn.vkMapMemory(context_.device, a.memory, 0, VK_WHOLE_SIZE, 0, &a.mapped);
         if (r != VK_SUCCESS) {
-            vkFreeMemory(context_.device, a.memory, nullptr);
+            context_.fn.vkFreeMemory(context_.device, a.memory, nullptr);
             return vkError(r, "vkMapMemory", debugName);
         }
     }
@@ -120,7 +120,7 @@ Result<MemoryAllocation> MemoryAllocator::allocate(const VkMemoryRequirements& r
 void MemoryAllocator::free(const MemoryAllocation& a) {
     if (!a) return;
     if (a.block < 0) {
-        vkFreeMemory(context_.device, a.memory, nullptr);   // unmapped implicitly (spec vkFreeMemory)
+        context_.fn.vkFreeMemory(context_.device, a.memory, nullptr);   // unmapped implicitly (spec vkFreeMemory)
         return;
     }
     std::lock_guard lock(mutex_);

@@ -43,9 +43,9 @@ struct Candidate {
 };
 
 // Returns an empty string when `physical` fits, otherwise why not.
-std::string evaluate(VkPhysicalDevice physical, const DeviceDesc& desc, Candidate& out) {
+std::string evaluate(const VulkanContext& context, VkPhysicalDevice physical, const DeviceDesc& desc, Candidate& out) {
     VkPhysicalDeviceProperties props;
-    vkGetPhysicalDeviceProperties(physical, &props);
+    context.fn.vkGetPhysicalDeviceProperties(physical, &props);
     const std::string name = props.deviceName;
     auto refuse = [&](const std::string& what, const char* by) {
         return "vulkan: device '" + name + "' lacks " + what + " required by " + by;
@@ -53,9 +53,9 @@ std::string evaluate(VkPhysicalDevice physical, const DeviceDesc& desc, Candidat
     if (props.apiVersion < VK_API_VERSION_1_3) return refuse("Vulkan 1.3", "the vulkan backend");
 
     uint32_t count = 0;
-    vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
+    context.fn.vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
     std::vector<VkExtensionProperties> exts(count);
-    vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, exts.data());
+    context.fn.vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, exts.data());
     out.extensions.clear();
     for (const auto& e : exts) out.extensions.insert(e.extensionName);
     auto has = [&](const char* e) { return out.extensions.count(e) != 0; };
@@ -71,7 +71,7 @@ std::string evaluate(VkPhysicalDevice physical, const DeviceDesc& desc, Candidat
     const bool rtExt = asExt && has(VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
     out.features.link(asExt, rtExt, asExt && has(VK_KHR_RAY_QUERY_EXTENSION_NAME),
                       has(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME));
-    vkGetPhysicalDeviceFeatures2(physical, &out.features.base);
+    context.fn.vkGetPhysicalDeviceFeatures2(physical, &out.features.base);
     const auto& f12 = out.features.v12;
     const auto& f13 = out.features.v13;
     const std::pair<VkBool32, const char*> core[] = {
@@ -95,9 +95,9 @@ std::string evaluate(VkPhysicalDevice physical, const DeviceDesc& desc, Candidat
     }
 
     uint32_t familyCount = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, nullptr);
+    context.fn.vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, nullptr);
     std::vector<VkQueueFamilyProperties> families(familyCount);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, families.data());
+    context.fn.vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, families.data());
     for (uint32_t i = 0; i < familyCount; ++i) {
         const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
         if ((families[i].queueFlags & need) == need && families[i].timestampValidBits > 0) {
@@ -113,16 +113,16 @@ std::string evaluate(VkPhysicalDevice physical, const DeviceDesc& desc, Candidat
 
 Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc) {
     uint32_t count = 0;
-    vkEnumeratePhysicalDevices(context.instance, &count, nullptr);
+    context.fn.vkEnumeratePhysicalDevices(context.instance, &count, nullptr);
     std::vector<VkPhysicalDevice> physicals(count);
-    vkEnumeratePhysicalDevices(context.instance, &count, physicals.data());
+    context.fn.vkEnumeratePhysicalDevices(context.instance, &count, physicals.data());
     if (physicals.empty()) return makeError("vulkan: no physical device (is a Vulkan driver installed?)");
 
     Candidate chosen;
     std::string reasons;
     for (uint32_t i = 0; i < count; ++i) {
         if (desc.adapterIndex && *desc.adapterIndex != i) continue;
-        std::string why = evaluate(physicals[i], desc, chosen);
+        std::string why = evaluate(context, physicals[i], desc, chosen);
         if (why.empty()) break;
         chosen.device = VK_NULL_HANDLE;
         reasons += (reasons.empty() ? "" : "; ") + why;
@@ -199,18 +199,17 @@ Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc) {
     info.pQueueCreateInfos = &queue;
     info.enabledExtensionCount = uint32_t(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
-    VkResult r = vkCreateDevice(chosen.device, &info, nullptr, &context.device);
+    VkResult r = context.fn.vkCreateDevice(chosen.device, &info, nullptr, &context.device);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateDevice");
 
     context.physicalDevice = chosen.device;
     context.queueFamily = chosen.queueFamily;
-    vkGetDeviceQueue(context.device, chosen.queueFamily, 0, &context.queue);
-    return finishDeviceSetup(context,
-                             {asExt, rtExt, rayQuery,
-                              atomicFloat && s.atomicFloat.shaderBufferFloat32AtomicAdd &&
-                                  s.atomicFloat.shaderImageFloat32AtomicAdd,
-                              rtExt && s.rt.rayTracingPipelineTraceRaysIndirect},
-                             vkGetDeviceProcAddr);
+    CAUSTICS_CHECK(loadDeviceDispatch(context.fn, context.device, asExt, rtExt, "our device"));
+    context.fn.vkGetDeviceQueue(context.device, chosen.queueFamily, 0, &context.queue);
+    return finishDeviceSetup(context, {asExt, rtExt, rayQuery,
+                                       atomicFloat && s.atomicFloat.shaderBufferFloat32AtomicAdd &&
+                                           s.atomicFloat.shaderImageFloat32AtomicAdd,
+                                       rtExt && s.rt.rayTracingPipelineTraceRaysIndirect});
 }
 
 }  // namespace caustics::rhi::vulkan

@@ -26,7 +26,7 @@ Result<VkPipelineLayout> createPipelineLayout(const VulkanContext& context, cons
     info.pushConstantRangeCount = bindings.pushConstantBytes > 0 ? 1 : 0;
     info.pPushConstantRanges = &range;
     VkPipelineLayout layout = VK_NULL_HANDLE;
-    VkResult r = vkCreatePipelineLayout(context.device, &info, nullptr, &layout);
+    VkResult r = context.fn.vkCreatePipelineLayout(context.device, &info, nullptr, &layout);
     if (r != VK_SUCCESS) return vkError(r, "vkCreatePipelineLayout", debugName);
     context.setName(VK_OBJECT_TYPE_PIPELINE_LAYOUT, layout, debugName);
     return layout;
@@ -41,7 +41,7 @@ Result<VkShaderModule> createShaderModule(const VulkanContext& context, const Sh
     info.codeSize = code.bytes.size();
     info.pCode = reinterpret_cast<const uint32_t*>(code.bytes.data());
     VkShaderModule module = VK_NULL_HANDLE;
-    VkResult r = vkCreateShaderModule(context.device, &info, nullptr, &module);
+    VkResult r = context.fn.vkCreateShaderModule(context.device, &info, nullptr, &module);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateShaderModule", code.debugName);
     context.setName(VK_OBJECT_TYPE_SHADER_MODULE, module, code.debugName);
     return module;
@@ -57,8 +57,8 @@ void VulkanPipelineBase::release() {
     VkPipeline p = pipeline_;
     VkPipelineLayout l = layout_;
     ctx->deferDestroy([ctx, p, l] {
-        if (p != VK_NULL_HANDLE) vkDestroyPipeline(ctx->device, p, nullptr);
-        if (l != VK_NULL_HANDLE) vkDestroyPipelineLayout(ctx->device, l, nullptr);
+        if (p != VK_NULL_HANDLE) ctx->fn.vkDestroyPipeline(ctx->device, p, nullptr);
+        if (l != VK_NULL_HANDLE) ctx->fn.vkDestroyPipelineLayout(ctx->device, l, nullptr);
     });
 }
 
@@ -79,8 +79,8 @@ Result<std::shared_ptr<VulkanComputePipeline>> VulkanComputePipeline::create(con
     info.stage.module = module.value();
     info.stage.pName = desc.shader.entryPoint.c_str();
     info.layout = pipeline->layout_;
-    VkResult r = vkCreateComputePipelines(context->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline->pipeline_);
-    vkDestroyShaderModule(context->device, module.value(), nullptr);
+    VkResult r = context->fn.vkCreateComputePipelines(context->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline->pipeline_);
+    context->fn.vkDestroyShaderModule(context->device, module.value(), nullptr);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateComputePipelines", desc.debugName);
     context->setName(VK_OBJECT_TYPE_PIPELINE, pipeline->pipeline_, desc.debugName);
     return pipeline;

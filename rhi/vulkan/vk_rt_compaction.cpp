@@ -10,11 +10,12 @@ namespace caustics::rhi::vulkan {
 namespace {
 
 // Orders earlier AS builds/copies (any submission on the queue) before the next AS command.
-void accelStructBuildBarrier(VkCommandBuffer cb, VkPipelineStageFlags dstStages, VkAccessFlags dstAccess) {
+void accelStructBuildBarrier(const VulkanContext& ctx, VkCommandBuffer cb, VkPipelineStageFlags dstStages,
+                             VkAccessFlags dstAccess) {
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
     barrier.dstAccessMask = dstAccess;
-    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, dstStages, 0, 1, &barrier, 0,
+    ctx.fn.vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, dstStages, 0, 1, &barrier, 0,
                          nullptr, 0, nullptr);
 }
 
@@ -33,24 +34,24 @@ Result<AccelStructHandle> VulkanDevice::compactAccelStruct(const AccelStructHand
     poolInfo.queryType = VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR;
     poolInfo.queryCount = 1;
     VkQueryPool pool = VK_NULL_HANDLE;
-    VkResult r = vkCreateQueryPool(ctx.device, &poolInfo, nullptr, &pool);
+    VkResult r = ctx.fn.vkCreateQueryPool(ctx.device, &poolInfo, nullptr, &pool);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateQueryPool (compacted size)", source.desc().debugName);
 
     VkAccelerationStructureKHR sourceHandle = source.handle();
     Status queried = executeImmediate([&](VulkanCommandList& list) {
         VkCommandBuffer cb = list.commandBuffer();
-        vkCmdResetQueryPool(cb, pool, 0, 1);
-        accelStructBuildBarrier(cb, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+        ctx.fn.vkCmdResetQueryPool(cb, pool, 0, 1);
+        accelStructBuildBarrier(ctx, cb, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
                                 VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
         ctx.fn.vkCmdWriteAccelerationStructuresPropertiesKHR(
             cb, 1, &sourceHandle, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, pool, 0);
     });
     VkDeviceSize compactedBytes = 0;
     if (queried) {
-        r = vkGetQueryPoolResults(ctx.device, pool, 0, 1, sizeof(compactedBytes), &compactedBytes,
+        r = ctx.fn.vkGetQueryPoolResults(ctx.device, pool, 0, 1, sizeof(compactedBytes), &compactedBytes,
                                   sizeof(compactedBytes), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
     }
-    vkDestroyQueryPool(ctx.device, pool, nullptr);
+    ctx.fn.vkDestroyQueryPool(ctx.device, pool, nullptr);
     if (!queried) return queried.error();
     if (r != VK_SUCCESS) return vkError(r, "vkGetQueryPoolResults (compacted size)", source.desc().debugName);
     if (compactedBytes == 0) return makeError("compactAccelStruct: " + name + " reported a compacted size of 0");
@@ -68,7 +69,7 @@ Result<AccelStructHandle> VulkanDevice::compactAccelStruct(const AccelStructHand
         copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR;
         ctx.fn.vkCmdCopyAccelerationStructureKHR(cb, &copy);
         // Makes the copy visible to whatever uses the new structure next (TLAS builds, traces).
-        accelStructBuildBarrier(cb, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
+        accelStructBuildBarrier(ctx, cb, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
     });
     if (!copied) return copied.error();
     target.value()->built = true;

@@ -24,7 +24,7 @@ Result<std::shared_ptr<VulkanSampler>> VulkanSampler::create(const ContextPtr& c
     info.anisotropyEnable = VK_FALSE;
     info.maxAnisotropy = 1.0f;
     info.maxLod = VK_LOD_CLAMP_NONE;
-    VkResult r = vkCreateSampler(context->device, &info, nullptr, &sampler->sampler_);
+    VkResult r = context->fn.vkCreateSampler(context->device, &info, nullptr, &sampler->sampler_);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateSampler");
     return sampler;
 }
@@ -32,7 +32,7 @@ Result<std::shared_ptr<VulkanSampler>> VulkanSampler::create(const ContextPtr& c
 VulkanSampler::~VulkanSampler() {
     ContextPtr ctx = context_;
     VkSampler s = sampler_;
-    ctx->deferDestroy([ctx, s] { vkDestroySampler(ctx->device, s, nullptr); });
+    ctx->deferDestroy([ctx, s] { ctx->fn.vkDestroySampler(ctx->device, s, nullptr); });
 }
 
 Result<std::shared_ptr<VulkanHeap>> VulkanHeap::create(const ContextPtr& context, const HeapDesc& desc) {
@@ -50,7 +50,7 @@ Result<std::shared_ptr<VulkanHeap>> VulkanHeap::create(const ContextPtr& context
 VulkanHeap::~VulkanHeap() {
     ContextPtr ctx = context_;
     VkDeviceMemory m = memory_;
-    ctx->deferDestroy([ctx, m] { vkFreeMemory(ctx->device, m, nullptr); });
+    ctx->deferDestroy([ctx, m] { ctx->fn.vkFreeMemory(ctx->device, m, nullptr); });
 }
 
 }  // namespace caustics::rhi::vulkan

@@ -99,7 +99,7 @@ Result<std::shared_ptr<VulkanShaderTable>> VulkanShaderTable::create(VulkanDevic
         constexpr uint64_t kMaxUpdate = 65536;
         for (uint64_t done = 0; done < image.bytes.size(); done += kMaxUpdate) {
             const uint64_t bytes = std::min<uint64_t>(kMaxUpdate, image.bytes.size() - done);
-            vkCmdUpdateBuffer(list.commandBuffer(), toVk(table->buffer_)->handle(), start + done, bytes,
+            list.context().fn.vkCmdUpdateBuffer(list.commandBuffer(), toVk(table->buffer_)->handle(), start + done, bytes,
                               image.bytes.data() + done);
         }
         list.barrier(BufferBarrier{table->buffer_, ResourceState::CopyDest, ResourceState::ShaderTable});

@@ -116,7 +116,7 @@ Result<std::shared_ptr<VulkanStateObject>> VulkanStateObject::create(const Conte
     // One module per library; every export of it is an entry point (pName) of that module.
     std::vector<VkShaderModule> modules;
     auto destroyModules = [&] {
-        for (VkShaderModule m : modules) vkDestroyShaderModule(context->device, m, nullptr);
+        for (VkShaderModule m : modules) context->fn.vkDestroyShaderModule(context->device, m, nullptr);
     };
     for (const ShaderLibraryDesc& lib : desc.libraries) {
         auto module = createShaderModule(*context, lib.code);

@@ -37,7 +37,7 @@ Result<std::shared_ptr<VulkanTexture>> VulkanTexture::create(const ContextPtr& c
     info.usage = toVkImageUsage(desc.usage, desc.format);
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkResult r = vkCreateImage(ctx.device, &info, nullptr, &texture->image_);
+    VkResult r = ctx.fn.vkCreateImage(ctx.device, &info, nullptr, &texture->image_);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateImage", desc.debugName);
     ctx.setName(VK_OBJECT_TYPE_IMAGE, texture->image_, desc.debugName);
     if (desc.isVirtual) return texture;
@@ -45,7 +45,7 @@ Result<std::shared_ptr<VulkanTexture>> VulkanTexture::create(const ContextPtr& c
     auto allocation = ctx.allocator->allocate(texture->requirements(), MemoryType::DeviceLocal, true, desc.debugName);
     if (!allocation) return allocation.error();
     texture->allocation_ = allocation.value();
-    r = vkBindImageMemory(ctx.device, texture->image_, texture->allocation_.memory, texture->allocation_.offset);
+    r = ctx.fn.vkBindImageMemory(ctx.device, texture->image_, texture->allocation_.memory, texture->allocation_.offset);
     if (r != VK_SUCCESS) return vkError(r, "vkBindImageMemory", desc.debugName);
     return texture;
 }
@@ -66,20 +66,20 @@ VulkanTexture::~VulkanTexture() {
     std::vector<VkImageView> views;
     for (auto& [key, view] : views_) views.push_back(view);
     ctx->deferDestroy([ctx, image, allocation, views] {
-        for (VkImageView v : views) vkDestroyImageView(ctx->device, v, nullptr);
-        if (image != VK_NULL_HANDLE) vkDestroyImage(ctx->device, image, nullptr);
+        for (VkImageView v : views) ctx->fn.vkDestroyImageView(ctx->device, v, nullptr);
+        if (image != VK_NULL_HANDLE) ctx->fn.vkDestroyImage(ctx->device, image, nullptr);
         ctx->allocator->free(allocation);
     });
 }
 
 VkMemoryRequirements VulkanTexture::requirements() const {
     VkMemoryRequirements req{};
-    vkGetImageMemoryRequirements(context_->device, image_, &req);
+    context_->fn.vkGetImageMemoryRequirements(context_->device, image_, &req);
     return req;
 }
 
 Status VulkanTexture::bindMemory(VkDeviceMemory memory, uint64_t offset) {
-    VkResult r = vkBindImageMemory(context_->device, image_, memory, offset);
+    VkResult r = context_->fn.vkBindImageMemory(context_->device, image_, memory, offset);
     if (r != VK_SUCCESS) return vkError(r, "vkBindImageMemory", desc_.debugName);
     return okStatus();
 }
@@ -95,7 +95,7 @@ Result<VkImageView> VulkanTexture::makeView(VkImageViewType type, uint32_t baseL
     if (viewAspect & VK_IMAGE_ASPECT_DEPTH_BIT) viewAspect = VK_IMAGE_ASPECT_DEPTH_BIT;
     info.subresourceRange = {viewAspect, baseMip, mips, baseLayer, layers};
     VkImageView view = VK_NULL_HANDLE;
-    VkResult r = vkCreateImageView(context_->device, &info, nullptr, &view);
+    VkResult r = context_->fn.vkCreateImageView(context_->device, &info, nullptr, &view);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateImageView", desc_.debugName);
     context_->setName(VK_OBJECT_TYPE_IMAGE_VIEW, view, desc_.debugName);
     return view;

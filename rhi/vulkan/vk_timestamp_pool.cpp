@@ -8,18 +8,18 @@ Result<std::shared_ptr<VulkanTimestampPool>> VulkanTimestampPool::create(const C
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = count;
-    VkResult r = vkCreateQueryPool(context->device, &info, nullptr, &pool->pool_);
+    VkResult r = context->fn.vkCreateQueryPool(context->device, &info, nullptr, &pool->pool_);
     if (r != VK_SUCCESS) return vkError(r, "vkCreateQueryPool");
     // Queries start in an undefined state; reset them on the host so a read before any write
     // reports "not available" rather than being invalid (hostQueryReset, core 1.2).
-    vkResetQueryPool(context->device, pool->pool_, 0, count);
+    context->fn.vkResetQueryPool(context->device, pool->pool_, 0, count);
     return pool;
 }
 
 VulkanTimestampPool::~VulkanTimestampPool() {
     ContextPtr ctx = context_;
     VkQueryPool p = pool_;
-    ctx->deferDestroy([ctx, p] { vkDestroyQueryPool(ctx->device, p, nullptr); });
+    ctx->deferDestroy([ctx, p] { ctx->fn.vkDestroyQueryPool(ctx->device, p, nullptr); });
 }
 
 }  // namespace caustics::rhi::vulkan

@@ -10,6 +10,7 @@
 
 #include "caustics/render_graph/render_graph.h"
 #include "caustics/rhi/vulkan_interop.h"
+#include "counting_proc_addr.h"
 #include "gpu_test.h"
 #include "raw_vulkan_host.h"
 
@@ -33,10 +34,13 @@ protected:
         EXPECT_TRUE(seen.empty()) << seen.size() << " validation message(s):" << all;
     }
 
-    // Creates the raw host (with ray tracing) and wraps its device into `device`; false on failure.
-    ::testing::AssertionResult wrapHost() {
+    // Creates the raw host (with ray tracing) and wraps its device into `device`, handing the module
+    // `getInstanceProcAddr` (the loader's when null); false on failure.
+    ::testing::AssertionResult wrapHost(PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr) {
         if (!host.create(/*withRayTracing=*/true)) return ::testing::AssertionFailure() << host.why();
-        auto wrapped = wrapVulkanDevice(host.deviceImport());
+        VulkanDeviceImport import = host.deviceImport();
+        if (getInstanceProcAddr) import.getInstanceProcAddr = getInstanceProcAddr;
+        auto wrapped = wrapVulkanDevice(import);
         if (!wrapped) return ::testing::AssertionFailure() << wrapped.message();
         device = wrapped.value();
         return ::testing::AssertionSuccess();
@@ -189,6 +193,31 @@ TEST_F(WrappedVulkanDevice, GraphRecordsIntoHostCommandBufferAndLeavesHostImageI
     EXPECT_EQ(mismatches, 0u);
     // Timestamps work on a wrapped command buffer (the module's own query pool, reset inside it).
     EXPECT_TRUE(passTime.has_value());
+}
+
+// Every call of the module goes through the pointers the host hands it (vk_dispatch.h): the host's
+// vkGetInstanceProcAddr resolves the core entry points too, and the module's vkCreateBuffer and
+// vkCmdDispatch calls land in the host's wrappers. The frame still gives the exact result.
+TEST_F(WrappedVulkanDevice, EveryCallGoesThroughTheHostsGetInstanceProcAddr) {
+    ASSERT_TRUE(wrapHost(countingGetInstanceProcAddr()));
+    const ProcAddrLog& log = procAddrLog();
+    for (const char* name : {"vkGetPhysicalDeviceProperties", "vkGetPhysicalDeviceMemoryProperties",
+                             "vkGetPhysicalDeviceFormatProperties", "vkGetDeviceProcAddr"})
+        EXPECT_TRUE(log.instanceNames.count(name)) << name << " was not resolved through the host's vkGetInstanceProcAddr";
+    for (const char* name : {"vkCreateBuffer", "vkAllocateMemory", "vkCmdPipelineBarrier2", "vkCmdDispatch",
+                             "vkQueueSubmit2", "vkCreateSemaphore", "vkCreateAccelerationStructureKHR"})
+        EXPECT_TRUE(log.deviceNames.count(name)) << name << " was not resolved through the host's vkGetDeviceProcAddr";
+
+    auto buffer = device->createBuffer(BufferDesc().setByteSize(256).setUsage(BufferUsage::Storage).setDebugName("counted"));
+    ASSERT_TRUE(buffer) << buffer.message();
+    EXPECT_GE(log.createBufferCalls, 1) << "vkCreateBuffer bypassed the host's pointer";
+    std::optional<double> passTime;
+    std::vector<uint32_t> values = runHostFrame(host, *device, /*allowTimestamps=*/false, passTime);
+    ASSERT_EQ(values.size(), kWidth * kHeight);
+    uint32_t mismatches = 0;
+    for (uint32_t i = 0; i < kWidth * kHeight; ++i) mismatches += values[i] != inputValue(i) * 3u + 1u;
+    EXPECT_EQ(mismatches, 0u);
+    EXPECT_EQ(log.dispatchCalls, 1) << "the graph's one dispatch did not go through the host's vkCmdDispatch";
 }
 
 TEST_F(WrappedVulkanDevice, TimestampsSwitchedOffRecordNoQueriesIntoHostCommandBuffer) {
