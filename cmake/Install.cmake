@@ -25,6 +25,10 @@ install(TARGETS ${causticsInstallTargets} EXPORT causticsTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT causticsTargets NAMESPACE caustics:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/caustics)
+get_property(CAUSTICS_PACKAGE_NEEDS_DIRECTX_GUIDS GLOBAL PROPERTY CAUSTICS_PACKAGE_NEEDS_DIRECTX_GUIDS)
+if(NOT CAUSTICS_PACKAGE_NEEDS_DIRECTX_GUIDS)
+  set(CAUSTICS_PACKAGE_NEEDS_DIRECTX_GUIDS OFF)
+endif()
 configure_package_config_file(cmake/causticsConfig.cmake.in "${CMAKE_CURRENT_BINARY_DIR}/causticsConfig.cmake"
   INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/caustics)
 write_basic_package_version_file("${CMAKE_CURRENT_BINARY_DIR}/causticsConfigVersion.cmake"

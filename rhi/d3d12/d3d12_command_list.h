@@ -280,6 +280,7 @@ public:
         else list->SetGraphicsRoot32BitConstants(UINT(root->layout.pushConstantParameter), bytes / 4, data, 0);
     }
 
+    bool recordsTimestamps() const override { return timestampsAllowed; }
     void resetTimestamps(const TimestampPoolHandle& pool, uint32_t first, uint32_t count) override {
         if (!timestampsAllowed) return;
         auto* p = static_cast<TimestampPool*>(pool.get());

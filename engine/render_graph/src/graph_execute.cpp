@@ -143,7 +143,10 @@ Status RenderGraph::execute(rhi::IDevice& device, rhi::ICommandList& cmd) {
     const CompiledPlan& plan = *plan_;
 
     uint32_t passCount = uint32_t(plan.order.size());
-    if (!ex.timestampsUnavailable && passCount > ex.passesPerSlot) {
+    // A list that records no timestamps (a host's, wrapped with allowTimestamps = false) gets no pool:
+    // nothing of ours is created on the host's device for them.
+    const bool timestamps = cmd.recordsTimestamps();
+    if (timestamps && !ex.timestampsUnavailable && passCount > ex.passesPerSlot) {
         uint32_t perSlot = std::max(passCount, 32u);
         auto pool = device.createTimestampPool(ExecutionState::kTimestampSlots * 2 * perSlot);
         if (pool) {
@@ -155,7 +158,7 @@ Status RenderGraph::execute(rhi::IDevice& device, rhi::ICommandList& cmd) {
             ex.timestampsUnavailable = true;
         }
     }
-    bool timed = ex.timestampPool && passCount <= ex.passesPerSlot;
+    bool timed = timestamps && ex.timestampPool && passCount <= ex.passesPerSlot;
     uint32_t slot = uint32_t(ex.frame % ExecutionState::kTimestampSlots);
     uint32_t base = slot * 2 * ex.passesPerSlot;
     if (timed && passCount) cmd.resetTimestamps(ex.timestampPool, base, 2 * passCount);

@@ -135,5 +135,29 @@ TEST(RenderGraphExecute, PassTimesAreMeasuredAndPrinted) {
     EXPECT_NE(g.printGraphviz().find("fill\\n1.000 ms"), std::string::npos) << g.printGraphviz();
 }
 
+// A list that records no timestamps (a host's, wrapped with allowTimestamps = false): the graph
+// creates no query pool on the device and records no timestamp; per-pass times stay empty. A later
+// list that does record them gets the pool then.
+TEST(RenderGraphExecute, ListWithoutTimestampsGetsNoQueryPool) {
+    RecordingDevice device;
+    RecordingCommandList untimed;
+    untimed.timestamps = false;
+    RenderGraph g;
+    declareFrame(g, test::fakeTexture());
+    ASSERT_TRUE(g.execute(device, untimed).ok());
+    EXPECT_EQ(device.timestampPoolsCreated, 0);
+    EXPECT_EQ(std::count_if(untimed.calls.begin(), untimed.calls.end(),
+                            [](const std::string& c) { return c.rfind("timestamp", 0) == 0; }),
+              0);
+    g.collectTimings(device);
+    EXPECT_FALSE(g.passTimeMs("fill"));
+
+    RecordingCommandList timed;
+    g.reset();
+    declareFrame(g, test::fakeTexture());
+    ASSERT_TRUE(g.execute(device, timed).ok());
+    EXPECT_EQ(device.timestampPoolsCreated, 1);
+}
+
 }  // namespace
 }  // namespace caustics::rg

@@ -33,6 +33,8 @@ private:
 class RecordingCommandList final : public rhi::ICommandList {
 public:
     std::vector<std::string> calls;
+    bool timestamps = true;   // false: a host's list wrapped with allowTimestamps = false
+    bool recordsTimestamps() const override { return timestamps; }
 
     void begin() override {}
     void end() override {}
@@ -90,6 +92,7 @@ public:
     int texturesCreated = 0;
     int buffersCreated = 0;
     int heapsCreated = 0;
+    int timestampPoolsCreated = 0;
     std::map<const void*, uint64_t> boundOffsets;
 
     rhi::Backend backend() const override { return rhi::Backend::Vulkan; }
@@ -132,6 +135,7 @@ public:
     Result<rhi::StateObjectHandle> createStateObject(const rhi::StateObjectDesc&) override { return unsupported(); }
     Result<rhi::ShaderTableHandle> createShaderTable(const rhi::ShaderTableDesc&) override { return unsupported(); }
     Result<rhi::TimestampPoolHandle> createTimestampPool(uint32_t count) override {
+        ++timestampPoolsCreated;
         return rhi::TimestampPoolHandle(std::make_shared<FakeTimestampPool>(count));
     }
     std::vector<std::optional<double>> readTimestamps(const rhi::TimestampPoolHandle&, uint32_t first,

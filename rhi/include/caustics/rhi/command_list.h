@@ -146,7 +146,9 @@ public:
     virtual void setBindingSet(uint32_t index, const BindingSetHandle& set) = 0;
     virtual void setPushConstants(const void* data, uint32_t bytes) = 0;
 
-    // Queries and markers.
+    // Queries and markers. recordsTimestamps(): false for a host's list wrapped with allowTimestamps =
+    // false (its timestamp calls record nothing, so a render graph creates no pool for it).
+    virtual bool recordsTimestamps() const { return true; }
     virtual void resetTimestamps(const TimestampPoolHandle& pool, uint32_t first, uint32_t count) = 0;
     virtual void writeTimestamp(const TimestampPoolHandle& pool, uint32_t index) = 0;
     virtual void beginMarker(std::string_view name) = 0;
