@@ -8,7 +8,7 @@ image.png: per-pass GPU medians against the swept setting (lights: the visible, 
 series), with the forward pass's ray segments per
 second on a second axis, next to the incoherent ray ceiling of the same scene measured in the same run; quality.csv -> quality.png: relative L1 of the caustic image against the
 converged reference next to the caustic passes' time, filter off and on; memory.csv -> memory.png:
-caustic transients at each image size. Needs python3-matplotlib (scripts/install-deps.sh).
+the biggest transient and persistent resources at each image size (stacked). Needs python3-matplotlib (scripts/install-deps.sh).
 """
 import argparse
 import csv
@@ -129,24 +129,36 @@ def plot_quality(rows, out_dir, scene):
     return path
 
 
-def plot_memory(rows, out_dir):
-    rows = [r for r in rows if r["sweep"] == "image" and r["view"] == "visible"]
+def plot_memory(rows, out_dir, top=10):
+    """Stacked bars per image size of the `top` biggest resources (transient and persistent, from
+    memory.csv), the rest summed as "other"; the "total" rows are the bars' height check."""
+    rows = [r for r in rows if r["sweep"] == "image" and r["view"] == "visible" and r["resource"] != "total"]
     if not rows:
         return None
     sizes = sorted({r["value"] for r in rows}, key=lambda v: int(v.split("x")[0]))
-    resources = sorted({r["resource"] for r in rows})
-    fig, ax = plt.subplots(figsize=(8, 5))
+    kind = {r["resource"]: r.get("kind", "transient") for r in rows}
+    peak = {}
+    for r in rows:
+        peak[r["resource"]] = max(peak.get(r["resource"], 0.0), number(r, "bytes"))
+    biggest = sorted(peak, key=peak.get, reverse=True)[:top]
+    fig, ax = plt.subplots(figsize=(9, 5.5))
     bottom = [0.0] * len(sizes)
-    for res in resources:
-        mib = []
-        for s in sizes:
-            mib.append(sum(number(r, "bytes") for r in rows if r["value"] == s and r["resource"] == res) / 2**20)
-        ax.bar(sizes, mib, bottom=bottom, label=res)
+
+    def mib_of(size, keep):
+        return sum(number(r, "bytes") for r in rows if r["value"] == size and keep(r["resource"])) / 2**20
+
+    for res in biggest + ["other"]:
+        keep = (lambda name, res=res: name == res) if res != "other" else (lambda name: name not in biggest)
+        mib = [mib_of(size, keep) for size in sizes]
+        label = f"{res} ({kind[res]})" if res != "other" else "everything else"
+        ax.bar(sizes, mib, bottom=bottom, label=label, hatch="//" if kind.get(res) == "persistent" else None)
         bottom = [b + m for b, m in zip(bottom, mib)]
-    ax.set_ylabel("MiB (before aliasing)")
+    for x, total in zip(sizes, bottom):
+        ax.annotate(f"{total:.0f} MiB", (x, total), ha="center", va="bottom", fontsize=8)
+    ax.set_ylabel("MiB (transients before aliasing; hatched: persistent)")
     ax.set_xlabel("image size")
     ax.legend(fontsize=7)
-    ax.set_title("caustic transients per frame")
+    ax.set_title("caustics module GPU memory per resource (CausticsModule::memoryReport + graph transients)")
     path = os.path.join(out_dir, "memory.png")
     fig.tight_layout()
     fig.savefig(path, dpi=110)

@@ -68,6 +68,41 @@ Result<std::unique_ptr<CausticsView>> CausticsModule::createView() {
 
 const CausticsSettings& CausticsModule::settings() const { return impl_->settings; }
 
+std::vector<MemoryEntry> CausticsModule::memoryReport() const {
+    std::vector<MemoryEntry> out;
+    const scene::GpuScene& gpu = *impl_->gpuScene;
+    addMemoryEntry(out, "scene.positions", gpu.positions);
+    addMemoryEntry(out, "scene.vertices", gpu.vertices);
+    addMemoryEntry(out, "scene.indices", gpu.indices);
+    addMemoryEntry(out, "scene.materials", gpu.materials);
+    addMemoryEntry(out, "scene.instances", gpu.instances);
+    addMemoryEntry(out, "scene.tlas", gpu.tlas);
+    // Per-mesh BLASes and per-material textures: one summed entry each (a scene has thousands).
+    MemoryEntry blases{"scene.blases (" + std::to_string(gpu.blases.size()) + ")", 0, MemoryKind::Persistent};
+    for (const rhi::AccelStructHandle& b : gpu.blases)
+        if (b) blases.bytes += b->storageBytes();
+    MemoryEntry textures{"scene.textures (" + std::to_string(gpu.textures.size()) + ")", 0, MemoryKind::Persistent};
+    for (const rhi::TextureHandle& t : gpu.textures)
+        if (t) textures.bytes += textureBytes(t->desc());
+    for (const MemoryEntry& e : {blases, textures})
+        if (e.bytes > 0) out.push_back(e);
+    impl_->liveScene->appendMemory(out);
+    appendCausticMemory(impl_->caustics, out);
+    for (MemoryEntry& e : memoryReport(*impl_->defaultView)) out.push_back(std::move(e));
+    return out;
+}
+
+std::vector<MemoryEntry> CausticsModule::memoryReport(const CausticsView& view) const {
+    std::vector<MemoryEntry> out;
+    const CausticsView::Impl& v = view.impl();
+    MemoryEntry cameras{"view.camera_buffers (" + std::to_string(v.cameraBuffers.size()) + ")", 0, MemoryKind::Persistent};
+    for (const rhi::BufferHandle& b : v.cameraBuffers)
+        if (b) cameras.bytes += b->desc().byteSize;
+    if (cameras.bytes > 0) out.push_back(cameras);
+    appendHistoryMemory(v.history, "view.history", out);
+    return out;
+}
+
 Status CausticsModule::setSettings(const CausticsSettings& settings) {
     CAUSTICS_CHECK(settings.validate());
     if (settings.framesInFlight != impl_->settings.framesInFlight)

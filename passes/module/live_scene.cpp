@@ -197,4 +197,16 @@ Result<LiveSceneFrame> LiveScene::addUpdatePass(rg::RenderGraph& graph, const sc
     return frame;
 }
 
+void LiveScene::appendMemory(std::vector<MemoryEntry>& out) const {
+    for (size_t i = 0; i < slots_.size(); ++i) {
+        if (!slots_[i]) continue;
+        const std::string prefix = "scene.slot" + std::to_string(i) + ".";
+        const SceneTables& t = slots_[i]->tables;
+        addMemoryEntry(out, prefix + "tlas", t.tlas);
+        addMemoryEntry(out, prefix + "materials", t.materials);
+        addMemoryEntry(out, prefix + "instances", t.instances);
+        addMemoryEntry(out, prefix + "lights", t.lights);
+    }
+}
+
 }  // namespace caustics

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "caustics/host_scene.h"
+#include "caustics/memory_report.h"
 #include "caustics/render_graph/render_graph.h"
 #include "caustics/rhi/device.h"
 #include "caustics/scene_bindings.h"
@@ -33,6 +34,9 @@ public:
                                          const HostSceneTables& host = {});
 
     const rhi::BindingLayoutHandle& layout() const { return layout_; }
+    // Each slot's own tables and TLAS (caustics/memory_report.h), named "scene.slot<N>.<table>"; the
+    // geometry they share with the GpuScene is not repeated, a host's tables are not ours.
+    void appendMemory(std::vector<MemoryEntry>& out) const;
 
     struct Slot;
 

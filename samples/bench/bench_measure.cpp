@@ -62,6 +62,7 @@ Result<Measurement> measure(const rhi::DeviceHandle& device, BenchSession& sessi
     m.maps = uint32_t(planCausticMaps(scene, computeSpecularBounds(scene)).maps.size());
     m.transients = frames->transients();
     m.transientHeapBytes = frames->transientHeapBytes();
+    m.persistent = session.module->memoryReport();
     if (readCaustics) m.caustics = frames->caustics();
     return m;
 }

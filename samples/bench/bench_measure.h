@@ -33,6 +33,7 @@ struct Measurement {
     uint64_t hitAttempts = 0;               // forward diffuse hits offered (> kept: overflow)
     uint64_t gatherPairs = 0;
     std::vector<TransientMemory> transients;
+    std::vector<MemoryEntry> persistent;    // CausticsModule::memoryReport() after the last frame
     uint64_t transientHeapBytes = 0;
     std::vector<float> caustics;            // RGBA32F caustic radiance of the last frame (if asked)
 

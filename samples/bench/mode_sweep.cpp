@@ -10,7 +10,8 @@
 //                the same scene measured in the same run (ray_rates.h: --width x --height rays from
 //                uniform points of the scene's box in uniform directions against the scene TLAS), and
 //                their ratio (issue 11's target: >= 0.6 at >= 8 rays per texel); ceiling.csv has it alone
-//   memory.csv   every caustic transient of each run and its size
+//   memory.csv   every caustic transient (render graph, before aliasing) and every persistent resource
+//                (CausticsModule::memoryReport()) of each run, its size and kind, and a "total" row
 //   quality.csv  relative L1 of the caustic image against a converged reference (16 rays per texel x
 //                --reference-frames frames, unfiltered) next to the time, filter off and on
 // Every other setting stays at the flags' values (paper defaults). scripts/plot_bench.py plots them.
@@ -51,8 +52,8 @@ public:
                     "caustics_ms,maps_ms,emitters_ms,forward_ms,backward_ms,spheres_ms,gather_ms,filter_ms,photons,"
                     "texels_emitting,texels_dispatched,segments,spheres,stored_hits,hits_offered,overflow,"
                     "transient_bytes,transient_heap_bytes,specular_pixels,backward_launches,sphere_capacity,spheres_dropped,"
-                    "forward_msegments_per_s,incoherent_ceiling_mrays_per_s,forward_fraction_of_ceiling\n";
-        memory_ << "sweep,value,view,resource,bytes\n";
+                    "forward_msegments_per_s,incoherent_ceiling_mrays_per_s,forward_fraction_of_ceiling,persistent_bytes\n";
+        memory_ << "sweep,value,view,resource,bytes,kind\n";
         quality_ << "sweep,value,rays_per_texel,depth,filter,caustics_ms,frame_ms,relative_l1\n";
     }
     bool ok() const { return timings_.good() && memory_.good() && quality_.good(); }
@@ -62,10 +63,16 @@ public:
         const CausticsSettings& s = r.settings;
         const char* view = runViewName(r);
         uint64_t transientBytes = 0;
+        auto memoryRow = [&](const std::string& name, uint64_t bytes, const char* kind) {
+            memory_ << r.sweep << ',' << r.value << ',' << view << ',' << name << ',' << bytes << ',' << kind << '\n';
+        };
         for (const TransientMemory& t : m.transients) {
             transientBytes += t.bytes;
-            memory_ << r.sweep << ',' << r.value << ',' << view << ',' << t.name << ',' << t.bytes << '\n';
+            memoryRow(t.name, t.bytes, memoryKindName(MemoryKind::Transient));
         }
+        const uint64_t persistentBytes = totalBytes(m.persistent);
+        for (const MemoryEntry& e : m.persistent) memoryRow(e.name, e.bytes, memoryKindName(e.kind));
+        memoryRow("total", transientBytes + persistentBytes, "all");
         std::string sceneName = sc.name;   // plain CSV: no quoting needed
         for (char& c : sceneName)
             if (c == ',' || c == '"') c = ';';
@@ -85,7 +92,7 @@ public:
         const double forwardMs = m.passTime("caustics.forward");
         const double segmentsPerS = forwardMs > 0.0 ? double(m.segments) / (forwardMs * 1e3) : 0.0;
         timings_ << ',' << segmentsPerS << ',' << ceilingMrays_ << ','
-                 << (ceilingMrays_ > 0.0 ? segmentsPerS / ceilingMrays_ : 0.0) << '\n';
+                 << (ceilingMrays_ > 0.0 ? segmentsPerS / ceilingMrays_ : 0.0) << ',' << persistentBytes << '\n';
         if (r.reference)
             quality_ << r.sweep << ',' << r.value << ',' << s.raysPerTexel << ',' << s.maxSpecularDepth << ','
                      << (s.filter ? "on" : "off") << ',' << m.causticsMs << ',' << m.frameMs << ','

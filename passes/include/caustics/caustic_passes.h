@@ -22,6 +22,7 @@
 #include "caustics/caustic_map_plan.h"
 #include "caustics/caustics_settings.h"
 #include "caustics/gbuffer.h"
+#include "caustics/memory_report.h"
 #include "caustics/scene_bindings.h"
 #include "caustics/render_graph/render_graph.h"
 #include "caustics/rhi/device.h"
@@ -120,6 +121,11 @@ public:
 private:
     std::unique_ptr<Impl> impl_;
 };
+
+// Persistent GPU memory (memory_report.h), names prefixed "caustics." / `prefix`: the sphere AABB,
+// BLAS and TLAS of the second type and the sphere-count readbacks; and one view's filter history.
+void appendCausticMemory(CausticResources& resources, std::vector<MemoryEntry>& out);
+void appendHistoryMemory(const CausticViewHistory& history, const std::string& prefix, std::vector<MemoryEntry>& out);
 
 struct CausticFrameInputs {
     rhi::IDevice* device = nullptr;

@@ -22,6 +22,7 @@
 #include "caustics/camera_view.h"
 #include "caustics/caustics_settings.h"
 #include "caustics/gbuffer.h"
+#include "caustics/memory_report.h"
 #include "caustics/host_scene.h"
 #include "caustics/render_graph/render_graph.h"
 #include "caustics/rhi/device.h"
@@ -39,6 +40,7 @@ public:
     ~CausticsView();
     struct Impl;
     Impl& impl() { return *impl_; }
+    const Impl& impl() const { return *impl_; }
 
 private:
     friend class CausticsModule;
@@ -90,6 +92,13 @@ public:
     Result<std::unique_ptr<CausticsView>> createView();
 
     const CausticsSettings& settings() const;
+    // The persistent GPU memory the module holds or renders from, one entry per resource (memory_report.h;
+    // docs/embedding.md "Memory"): the GpuScene's geometry, textures and BLASes (summed, "scene.*"), each
+    // frame slot's tables and TLAS, the second type's sphere BLAS/TLAS, readbacks, the default view's
+    // camera buffers and filter history. Sizes follow the last executed frame (the sphere TLAS and the
+    // history grow with the output size). Views made by createView() add memoryReport(view) each.
+    std::vector<MemoryEntry> memoryReport() const;
+    std::vector<MemoryEntry> memoryReport(const CausticsView& view) const;
     // Validated like create(); takes effect at the next addPasses. framesInFlight cannot change.
     Status setSettings(const CausticsSettings& settings);
 

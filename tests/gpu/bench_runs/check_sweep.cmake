@@ -1,7 +1,7 @@
 # Runs a tiny `caustics-bench sweep --sweeps rays` and checks its CSV files: a header and 16 rows in
 # timings.csv and quality.csv (8 rays-per-texel settings x filter off/on), photons > 0 in every row,
 # the incoherent ray ceiling of the same scene in ceiling.csv (> 0 M rays/s, > 20 % of the rays hit the scene) and
-# in every timings row with the forward pass's fraction of it,
+# in every timings row with the forward pass's fraction of it, the persistent resources in memory.csv,
 # and, where Debian's python3-matplotlib is installed, that scripts/plot_bench.py writes rays.png.
 file(REMOVE_RECURSE "${OUT}")
 execute_process(COMMAND "${BENCH}" sweep --sweeps rays --scene builtin --width 64 --height 48 --map-size 32
@@ -47,6 +47,35 @@ list(GET ceilingFields 4 hitFraction)
 # at 64x48 (0.87 on the walled builtin:atrium at 256x144); a wrong or empty TLAS gives 0.
 if(NOT mrays GREATER 0 OR NOT hitFraction GREATER 0.2)
   message(FATAL_ERROR "ray ceiling not measured on the scene: ${ceilingRow}")
+endif()
+# memory.csv: the persistent sphere TLAS (CausticsModule::memoryReport) next to the transients, and one
+# total per run equal to the sum of its rows.
+file(STRINGS "${OUT}/memory.csv" memoryRows)
+list(REMOVE_AT memoryRows 0)
+set(sum 0)
+set(sawTlas FALSE)
+foreach(row ${memoryRows})
+  string(REPLACE "," ";" fields "${row}")
+  list(GET fields 1 value)
+  list(GET fields 3 resource)
+  list(GET fields 4 bytes)
+  list(GET fields 5 kind)
+  if(NOT value STREQUAL "0.25")   # the first run of the rays sweep
+    break()
+  endif()
+  if(resource STREQUAL "total")
+    if(NOT bytes EQUAL sum)
+      message(FATAL_ERROR "memory.csv total ${bytes} != sum of the run's rows ${sum}")
+    endif()
+    break()
+  endif()
+  math(EXPR sum "${sum} + ${bytes}")
+  if(resource STREQUAL "caustics.sphere_tlas" AND kind STREQUAL "persistent" AND bytes GREATER 0)
+    set(sawTlas TRUE)
+  endif()
+endforeach()
+if(NOT sawTlas)
+  message(FATAL_ERROR "memory.csv has no persistent caustics.sphere_tlas row with bytes > 0")
 endif()
 if(EXISTS /usr/bin/python3)
   execute_process(COMMAND /usr/bin/python3 -c "import matplotlib" RESULT_VARIABLE hasMatplotlib OUTPUT_QUIET ERROR_QUIET)
