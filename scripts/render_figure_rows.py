@@ -3,8 +3,14 @@
 (--aov caustics, filter off, one frame) at each rays-per-texel setting (0.25 .. 25, depth 4) and at each
 depth (1 .. 16, 1 ray per texel), cropped to the caustic, side by side with their labels.
 
-    python3 scripts/render_figure_rows.py --sample build/samples/sponza/caustics-sponza --out DIR \
+    python3 scripts/render_figure_rows.py --sample build/bin/caustics-sponza --out DIR \
         [--scene builtin:atrium] [--width 1920 --height 1080] [--map-resolution 512] [--exposure E]
+    python3 scripts/render_figure_rows.py --bench build/bin/caustics-bench --out DIR [same options]
+    (--compose-only with --bench: make the rows from the DIR/frames/*.pfm already written)
+
+--sample renders each frame with the sample (it links OpenImageIO and GLFW at load time); --bench uses
+`caustics-bench figures`, which links neither (for a headless GPU machine): it writes the linear caustic
+radiance as PFM files, tone-mapped here as exposure * x / (1 + exposure * x), then sRGB-encoded.
 
 Writes DIR/figure10_rays_per_texel.png and DIR/figure12_depth.png (and each frame as DIR/frames/*.png).
 On a GPU machine without matplotlib: `--print-commands` prints the sample's command lines (run them
@@ -48,6 +54,40 @@ def render(args, path, rays, depth):
     return mpimg.imread(path)[:, :, :3]
 
 
+def read_pfm(path):
+    """Portable Float Map: 'PF' (RGB), size line, scale line (negative: little endian), bottom row first."""
+    import numpy as np
+    with open(path, "rb") as f:
+        if f.readline().strip() != b"PF":
+            sys.exit(f"render_figure_rows: {path} is not an RGB PFM file")
+        width, height = (int(v) for v in f.readline().split())
+        scale = float(f.readline())
+        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
+    if data.size != width * height * 3:
+        sys.exit(f"render_figure_rows: {path}: {data.size} floats, want {width * height * 3}")
+    return data.reshape(height, width, 3)[::-1]
+
+
+def tone_map(radiance, exposure):
+    import numpy as np
+    x = np.maximum(radiance * exposure, 0.0)
+    x = x / (1.0 + x)
+    return np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1.0 / 2.4) - 0.055)
+
+
+def render_with_bench(args):
+    """All frames in one `caustics-bench figures` run; returns (rays images, depth images)."""
+    frames_dir = os.path.join(args.out, "frames")
+    cmd = [args.bench, "figures", "--scene", args.scene, "--width", str(args.width), "--height", str(args.height),
+           "--map-size", str(args.map_resolution), "--out", frames_dir]
+    if not args.compose_only:
+        result = subprocess.run(cmd, capture_output=True, text=True)
+        if result.returncode != 0:
+            sys.exit(f"render_figure_rows: {' '.join(cmd)} failed:\n{result.stderr}")
+    load = lambda name: tone_map(read_pfm(os.path.join(frames_dir, f"{name}.pfm")), args.exposure)  # noqa: E731
+    return [load(f"rays_{r}") for r in RAYS], [load(f"depth_{d}") for d in DEPTHS]
+
+
 def crop_box(image):
     import numpy as np
     lum = image.mean(axis=2)
@@ -86,6 +126,7 @@ def write_row(images, labels, box, title, path):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--sample", default="build/bin/caustics-sponza", help="path of the caustics-sponza executable")
+    p.add_argument("--bench", help="path of caustics-bench: render with its `figures` mode (no OpenImageIO/GLFW)")
     p.add_argument("--print-commands", action="store_true",
                    help="print the sample's command lines (one per frame, into OUT/frames) and exit")
     p.add_argument("--compose-only", action="store_true", help="make the rows from the frames already in OUT/frames")
@@ -103,8 +144,11 @@ def main():
             print(shlex.join(sample_command(args, path, rays, depth)))
         return
     os.makedirs(frames_dir, exist_ok=True)
-    images = [render(args, path, rays, depth) for _, path, rays, depth in frames(frames_dir)]
-    rays, depths = images[:len(RAYS)], images[len(RAYS):]
+    if args.bench:
+        rays, depths = render_with_bench(args)
+    else:
+        images = [render(args, path, rays, depth) for _, path, rays, depth in frames(frames_dir)]
+        rays, depths = images[:len(RAYS)], images[len(RAYS):]
     box = crop_box(rays[-1])
     write_row(rays, [f"{r} rays/texel" for r in RAYS], box, f"{args.scene}: caustics vs rays per texel (depth 4)",
               os.path.join(args.out, "figure10_rays_per_texel.png"))

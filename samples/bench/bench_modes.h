@@ -19,5 +19,6 @@ int runRaysMode(const BenchOptions& options);
 int runCausticsMode(const BenchOptions& options);
 int runFrameMode(const BenchOptions& options);
 int runSweepMode(const BenchOptions& options);
+int runFiguresMode(const BenchOptions& options);
 
 }  // namespace caustics::bench
