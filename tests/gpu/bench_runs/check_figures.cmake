@@ -2,15 +2,8 @@
 # Figures 10 and 12 (8 rays-per-texel settings, 6 depths), each with the PFM header and 64 x 48 x 3
 # floats; where python3-matplotlib is installed, scripts/render_figure_rows.py --bench tiles them.
 file(REMOVE_RECURSE "${OUT}")
-execute_process(COMMAND "${BENCH}" figures --scene builtin --width 64 --height 48 --map-size 32 --validation
-                        --out "${OUT}/frames"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "caustics-bench figures failed (${rc}):\n${out}\n${err}")
-endif()
-if(err MATCHES "validation:")
-  message(FATAL_ERROR "validation messages:\n${err}")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/run_bench.cmake")
+run_bench(figures --scene builtin --width 64 --height 48 --map-size 32 --validation --out "${OUT}/frames")
 foreach(name rays_0.25 rays_0.5 rays_0.75 rays_1 rays_2 rays_4 rays_8 rays_25 depth_1 depth_2 depth_3 depth_4
              depth_8 depth_16)
   set(path "${OUT}/frames/${name}.pfm")

@@ -2,15 +2,9 @@
 # away add one caustic map per extra ring light (0, 1, 2, 4, 8), while the culled series (ring lights
 # aimed away from every specular object) adds the lights to the scene but no map: the planner culls them.
 file(REMOVE_RECURSE "${OUT}")
-execute_process(COMMAND "${BENCH}" sweep --sweeps lights --scene builtin --width 64 --height 48 --map-size 32
-                        --frames 1 --warmup 0 --validation --out "${OUT}"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "caustics-bench sweep failed (${rc}):\n${out}\n${err}")
-endif()
-if(err MATCHES "validation:")
-  message(FATAL_ERROR "validation messages during the sweep:\n${err}")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/run_bench.cmake")
+run_bench(sweep --sweeps lights --scene builtin --width 64 --height 48 --map-size 32
+          --frames 1 --warmup 0 --validation --out "${OUT}")
 file(STRINGS "${OUT}/timings.csv" rows)
 list(REMOVE_AT rows 0)
 list(LENGTH rows count)

@@ -4,15 +4,9 @@
 # in every timings row with the forward pass's fraction of it, the persistent resources in memory.csv,
 # and, where Debian's python3-matplotlib is installed, that scripts/plot_bench.py writes rays.png.
 file(REMOVE_RECURSE "${OUT}")
-execute_process(COMMAND "${BENCH}" sweep --sweeps rays --scene builtin --width 64 --height 48 --map-size 32
-                        --frames 1 --warmup 0 --reference-frames 1 --validation --out "${OUT}"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "caustics-bench sweep failed (${rc}):\n${out}\n${err}")
-endif()
-if(err MATCHES "validation:")
-  message(FATAL_ERROR "validation messages during the sweep:\n${err}")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/run_bench.cmake")
+run_bench(sweep --sweeps rays --scene builtin --width 64 --height 48 --map-size 32
+          --frames 1 --warmup 0 --reference-frames 1 --validation --out "${OUT}")
 foreach(name timings quality)
   file(STRINGS "${OUT}/${name}.csv" lines)
   list(LENGTH lines count)

@@ -10,21 +10,16 @@
 #include "caustics/caustics_module.h"
 #include "caustics/scene/builtin_scenes.h"
 #include "caustics/scene/gpu_scene.h"
-#include "gpu_test.h"
+#include "builtin_scene_gpu_test.h"
 
 namespace caustics::test {
 namespace {
 
-class MemoryReport : public GpuTest {
+class MemoryReport : public BuiltinSceneGpuTest {
 protected:
     void SetUp() override {
-        GpuTest::SetUp();
-        auto built = scene::makeBuiltin("builtin");
-        ASSERT_TRUE(built) << built.message();
-        scene = std::move(*built);
-        auto gpu = scene::GpuScene::create(*device, scene);
-        ASSERT_TRUE(gpu) << gpu.message();
-        gpuScene.emplace(std::move(*gpu));
+        BuiltinSceneGpuTest::SetUp();
+        if (HasFatalFailure()) return;
         CausticsSettings s;
         s.mapResolution = 32;
         s.filter = true;   // the history textures exist only with the filter on
@@ -61,8 +56,6 @@ protected:
         return m;
     }
 
-    scene::Scene scene;
-    std::optional<scene::GpuScene> gpuScene;
     std::unique_ptr<CausticsModule> module;
 };
 

@@ -10,22 +10,13 @@
 #include "caustics/scene/builtin_scenes.h"
 #include "caustics/scene/gpu_scene.h"
 #include "frame_budget.h"
-#include "gpu_test.h"
+#include "builtin_scene_gpu_test.h"
 
 namespace caustics::test {
 namespace {
 
-class FrameMemory : public GpuTest {
+class FrameMemory : public BuiltinSceneGpuTest {
 protected:
-    void SetUp() override {
-        GpuTest::SetUp();
-        auto built = scene::makeBuiltin("builtin");
-        ASSERT_TRUE(built) << built.message();
-        scene = std::move(*built);
-        auto gpu = scene::GpuScene::create(*device, scene);
-        ASSERT_TRUE(gpu) << gpu.message();
-        gpuScene.emplace(std::move(*gpu));
-    }
     std::unique_ptr<CausticsModule> makeModule(uint32_t maxStoredHits) {
         CausticsSettings s;
         s.mapResolution = 64;
@@ -49,9 +40,6 @@ protected:
         EXPECT_TRUE(graph.compile(rg::DeviceMemorySizer(*device)));
         return graph.plan() ? graph.plan()->heapSize : 0;
     }
-
-    scene::Scene scene;
-    std::optional<scene::GpuScene> gpuScene;
 };
 
 // Measured (lavapipe, the "[ measured ]" lines): the fit from 64x48 and 128x96 predicts the heap at
