@@ -28,6 +28,8 @@ struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
     bool floatAtomics = true;
     rhi::BindingLayoutHandle mapLayout, emitterLayout, forwardLayout, backwardLayout, gatherLayout;
+    rhi::BindingLayoutHandle photonPlanLayout;
+    rhi::ComputePipelineHandle photonPlanPipeline;   // caustic_maps/photon_plan_pass.cpp
     // Built against a scene binding layout (recreated when the scene's layout changes).
     const rhi::IBindingLayout* sceneLayoutSeen = nullptr;
     rhi::GraphicsPipelineHandle mapPipeline;
@@ -65,7 +67,8 @@ struct CausticFrame {
     CausticViewHistory* history = nullptr;   // the view's (or res->ownHistory)
     uint32_t width = 0, height = 0;
     rg::RgBuffer camera, maps, radiance1, radiance2, hits, stats, spheres, instances;
-    rg::RgBuffer emitters, forwardArgs;   // caustics.emitters -> caustics.forward
+    rg::RgBuffer emitters, forwardArgs;   // caustics.emitters -> caustics.photonPlan -> caustics.forward
+    rg::RgBuffer layerPlans, owners;      // CausticLayerPlanGpu per layer; CausticMapPlan::instanceLayers
     rg::RgBuffer specularPixels, backwardArgs;   // caustics.specularPixels -> caustics.backward
     // The sphere TLAS capacity of this frame, chosen when the graph executes (caustics/sphere_capacity.h).
     std::shared_ptr<uint32_t> sphereCapacity;
@@ -78,6 +81,7 @@ struct CausticFrame {
 void addSetupPass(rg::RenderGraph& graph, CausticFrame& f);
 void addMapPass(rg::RenderGraph& graph, CausticFrame& f);
 void addEmitterPass(rg::RenderGraph& graph, CausticFrame& f);
+void addPhotonPlanPass(rg::RenderGraph& graph, CausticFrame& f);
 // The grid (min(stats[statSlot], cap), 1, 1) of an indirect ray dispatch, in a new 12-byte buffer;
 // (0, 1, 1) when stats[gateSlot] is 0.
 rg::RgBuffer addGridFromCountPass(rg::RenderGraph& graph, CausticFrame& f, const char* name, uint32_t statSlot,

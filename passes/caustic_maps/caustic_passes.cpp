@@ -21,9 +21,17 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.radiance1 = buffer("caustics.firstTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
         f.radiance2 = buffer("caustics.secondTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
         f.stats = buffer("caustics.stats", kStatCount * 4, storage | rhi::BufferUsage::CopySource);
-        // The forward grid (emitters, samples per texel, 1), counted up by caustics.emitters.
+        // The forward grid (launches, 1, 1), written by caustics.photonPlan.
         f.forwardArgs = buffer("caustics.forwardArgs", 12, storage | rhi::BufferUsage::Indirect);
-        const uint32_t forwardGrid[3] = {0u, uint32_t(std::ceil(f.in->settings.raysPerTexel)), 1u};
+        const uint32_t forwardGrid[3] = {0u, 1u, 1u};
+        // Per layer: emitter counts (caustics.emitters) and photons per texel (caustics.photonPlan); the
+        // instance -> layer ownership of every light with layers (caustic_map_plan.h).
+        const size_t layers = f.plan.maps.size();
+        if (layers > 0) {
+            f.layerPlans = buffer("caustics.layerPlans", layers * sizeof(CausticLayerPlanGpu), storage | rhi::BufferUsage::CopySource);
+            f.owners = buffer("caustics.layerOwners", std::max<size_t>(1, f.plan.instanceLayers.size()) * 4, storage);
+        }
+        std::vector<uint32_t> owners = f.plan.instanceLayers;
         // The backward grid (specular pixels, 1, 1), counted up by caustics.specularPixels.
         const bool secondType = f.in->settings.secondType && !f.plan.maps.empty();
         if (secondType) f.backwardArgs = buffer("caustics.backwardArgs", 12, storage | rhi::BufferUsage::Indirect);
@@ -40,9 +48,25 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
             cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
             cmd.fillBuffer(ctx.buffer(h.stats), 0);
             cmd.writeBuffer(ctx.buffer(h.forwardArgs), forwardGrid, sizeof(forwardGrid));
+            if (h.layerPlans.valid()) cmd.fillBuffer(ctx.buffer(h.layerPlans), 0);
+            if (h.owners.valid()) {
+                if (owners.empty()) cmd.fillBuffer(ctx.buffer(h.owners), 0);
+                else cmd.writeBuffer(ctx.buffer(h.owners), owners.data(), owners.size() * 4);
+            }
             if (secondType) cmd.writeBuffer(ctx.buffer(h.backwardArgs), backwardGrid, sizeof(backwardGrid));
         };
     });
+}
+
+// Upper bound of caustics.forward's launches: per layer, emitters x ceil(raysPerTexel) with at most
+// mapResolution^2 emitters; with a budget N_k, emitters x ceil(N_k / emitters) < N_k + emitters.
+uint64_t forwardLaunchBound(const CausticsSettings& s, const CausticMapPlan& plan) {
+    const uint64_t texels = uint64_t(s.mapResolution) * s.mapResolution;
+    uint64_t bound = 0;
+    for (const CausticMapGpu& m : plan.maps)
+        bound += m.photons > 0.0f ? uint64_t(std::ceil(double(m.photons))) + texels
+                                  : texels * uint64_t(std::ceil(s.raysPerTexel));
+    return std::max<uint64_t>(bound, texels * uint64_t(std::ceil(s.raysPerTexel)));
 }
 
 // Refuses settings the device cannot run, naming the setting, before anything is allocated.
@@ -50,14 +74,14 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
 // every sphere of the second type is one TLAS instance, so W x H must fit maxInstanceCount.
 Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan) {
     constexpr uint64_t kMaxRayLaunches = 1ull << 30;
-    const uint64_t samplesPerTexel = uint64_t(std::ceil(in.settings.raysPerTexel));
-    const uint64_t launches = uint64_t(in.settings.mapResolution) * in.settings.mapResolution * samplesPerTexel *
-                              std::max<uint64_t>(plan.maps.size(), 1);
+    const uint64_t launches = forwardLaunchBound(in.settings, plan);
     if (launches > kMaxRayLaunches)
         return makeError("addCausticPasses: mapResolution " + std::to_string(in.settings.mapResolution) +
-                         " x raysPerTexel " + std::to_string(in.settings.raysPerTexel) + " x " +
-                         std::to_string(plan.maps.size()) + " light maps = " + std::to_string(launches) +
-                         " ray launches, over the 2^30 a dispatch may have; lower mapResolution or raysPerTexel");
+                         " x raysPerTexel " + std::to_string(in.settings.raysPerTexel) + " (or photonsPerFrame " +
+                         std::to_string(in.settings.photonsPerFrame) + ") over " + std::to_string(plan.maps.size()) +
+                         " map layers = up to " + std::to_string(launches) +
+                         " ray launches, over the 2^30 a dispatch may have; lower mapResolution, raysPerTexel or "
+                         "photonsPerFrame");
     const uint64_t pixels = uint64_t(in.gbuffer.width) * in.gbuffer.height;
     const uint64_t maxInstances = in.device ? in.device->capabilities().maxInstanceCount : 0;
     if (in.settings.secondType && maxInstances != 0 && pixels > maxInstances)
@@ -80,7 +104,13 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
         return makeError("addCausticPasses: the G-buffer lacks linearDepth, objectId, optics (secondType) or "
                          "normalRoughness (filter)");
     CAUSTICS_CHECK(in.settings.validate());
-    CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene), in.settings.mapOccluders);
+    const CausticView view = causticViewOf(in.camera);
+    CausticPlanOptions planOptions;
+    planOptions.drawOccluders = in.settings.mapOccluders;
+    planOptions.view = &view;
+    planOptions.receiverReach = in.settings.causticReceiverReach;
+    planOptions.photons = in.photonsPerFrame ? *in.photonsPerFrame : in.settings.photonsPerFrame;
+    CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene), planOptions);
     CAUSTICS_CHECK(checkDeviceLimits(in, plan));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
     CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height));
@@ -103,6 +133,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     if (!f.plan.maps.empty()) {
         addMapPass(graph, f);
         addEmitterPass(graph, f);
+        addPhotonPlanPass(graph, f);
         addForwardPass(graph, f);
         if (in.settings.secondType) addBackwardPasses(graph, f);
     }
@@ -111,6 +142,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     out.secondTypeBuffer = f.radiance2;
     out.hits = f.hits;
     out.stats = f.stats;
+    out.layerPlans = f.layerPlans;
     out.spheres = f.spheres;
     out.mapObjectIds = f.mapIds;
     out.plan = std::move(f.plan);

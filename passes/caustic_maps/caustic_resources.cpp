@@ -74,8 +74,11 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
                TX = BindingType::SampledTexture, AS = BindingType::AccelStruct;
     CAUSTICS_TRY(m.mapLayout, makeBindingLayout(d, {{0, RO}}));
-    CAUSTICS_TRY(m.emitterLayout, makeBindingLayout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
-    CAUSTICS_TRY(m.forwardLayout, makeBindingLayout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW}}));
+    CAUSTICS_TRY(m.emitterLayout, makeBindingLayout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}, {5, RO}}));
+    CAUSTICS_TRY(m.forwardLayout, makeBindingLayout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW},
+                                                        {8, RW}, {9, RO}}));
+    CAUSTICS_TRY(m.photonPlanLayout, makeBindingLayout(d, {{0, RO}, {1, RW}, {2, RW}}));
+    CAUSTICS_TRY(m.photonPlanPipeline, compute(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout}, 8));
     CAUSTICS_TRY(m.backwardLayout, makeBindingLayout(d, {{0, CB}, {3, RW}, {4, RW}, {5, RW}, {6, RO}}));
     CAUSTICS_TRY(m.gatherLayout, makeBindingLayout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
     CAUSTICS_TRY(m.gridLayout, makeBindingLayout(d, {{0, RO}, {1, RW}}));
@@ -136,7 +139,7 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     gp.depthFormat = rhi::Format::D32_FLOAT;
     gp.debugName = "caustics.maps";
     CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
-    CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout}, 4));
+    CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout}, 8));
     CAUSTICS_CHECK(sceneTraceState(d, floatAtomics ? "forward_trace/forward.rgen" : "forward_trace/forward_fixed.rgen",
                                    kForwardPushBytes,
                                    sceneLayout, forwardLayout, forwardState, forwardTable));

@@ -1,7 +1,7 @@
 // caustics.forward (paper 3.2, Figure 4): one ray-generation launch per (emitting texel, sample) of
-// every caustic-forming light's map, in one dispatch whose grid caustics.emitters counted on the GPU
-// (dispatchRaysIndirect; without it, a direct dispatch over the list's capacity whose launches past
-// the list's length idle). forward.rgen emits, traces the specular chain, splats first-type caustics
+// every map layer, in one dispatch whose grid caustics.photonPlan laid out on the GPU
+// (dispatchRaysIndirect; without it, a direct dispatch over forwardLaunchBound whose launches past the
+// last layer's range idle). forward.rgen emits, traces the specular chain, splats first-type caustics
 // atomically and stores the diffuse hits.
 #include <cmath>
 
@@ -22,19 +22,21 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
         rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
         f.radiance1 = b.write(f.radiance1, rg::Access::StorageReadWrite);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
+        f.layerPlans = b.write(f.layerPlans, rg::Access::StorageReadWrite);
+        f.owners = b.read(f.owners, rg::Access::SampledRead);
         f.hits = b.write(b.createBuffer("caustics.hits", rhi::BufferDesc()
                                                              .setByteSize(uint64_t(s.maxStoredHits) * sizeof(CausticHit))
                                                              .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::CopySource)
                                                              .setDebugName("caustics.hits")),
                          rg::Access::StorageWrite);
+        const uint32_t layers = uint32_t(f.plan.maps.size());
         struct Push {
-            uint32_t mapSize, samplesPerTexel;
-            float raysPerTexel;
+            uint32_t mapSize, layers, instanceCount;
             uint32_t maxDepth, frame, flags, maxStoredHits, pad;
-        } push{s.mapResolution, uint32_t(std::ceil(s.raysPerTexel)), s.raysPerTexel, s.maxSpecularDepth,
+        } push{s.mapResolution, layers, f.plan.instanceCount, s.maxSpecularDepth,
                f.in->frameIndex * 0x9E3779B9u + s.seed, s.russianRoulette ? 1u : 0u, s.maxStoredHits, 0};
         static_assert(sizeof(Push) == kForwardPushBytes);
-        const uint32_t layers = uint32_t(f.plan.maps.size());
+        const uint64_t directLaunches = forwardLaunchBound(s, f.plan);
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {
@@ -47,12 +49,14 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
                 .add(rhi::BindingSetItem::sampledTexture(4, ctx.texture(objectId)))
                 .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.radiance1)))
                 .add(rhi::BindingSetItem::storageBuffer(6, ctx.buffer(h.hits)))
-                .add(rhi::BindingSetItem::storageBuffer(7, ctx.buffer(h.stats)));
+                .add(rhi::BindingSetItem::storageBuffer(7, ctx.buffer(h.stats)))
+                .add(rhi::BindingSetItem::storageBuffer(8, ctx.buffer(h.layerPlans)))
+                .add(rhi::BindingSetItem::storageBuffer(9, ctx.buffer(h.owners), false));
             rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.forwardLayout, d);
             if (!set) return;
             bindSceneTrace(ctx.cmd(), r.forwardState, r.forwardTable, sceneSet, set, push);
             if (indirect) ctx.cmd().dispatchRaysIndirect(ctx.buffer(h.forwardArgs));
-            else ctx.cmd().dispatchRays(push.mapSize * push.mapSize * layers, push.samplesPerTexel, 1);
+            else ctx.cmd().dispatchRays(uint32_t(directLaunches), 1, 1);
         };
     });
 }

@@ -1,4 +1,5 @@
 #include "caustics/caustics_module.h"
+#include "caustics/photon_budget.h"
 
 #include <cmath>
 #include <string>
@@ -28,6 +29,9 @@ struct CausticsModule::Impl {
     std::optional<CompositePass> composite;
     CausticResources caustics;
     bool causticsReady = false;
+    // CausticsSettings::causticTimeTargetMs: the steered budget and the graph's sample count it last saw.
+    std::optional<PhotonBudgetController> photonBudget;
+    uint64_t timingSamplesSeen = 0;
 };
 
 CausticsModule::CausticsModule(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -187,6 +191,17 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         ci.frameIndex = in.frameIndex;
         ci.resetHistory = in.resetHistory;
         ci.history = &view.history;
+        if (m.settings.causticTimeTargetMs > 0.0f) {
+            if (!m.photonBudget) m.photonBudget.emplace(m.settings.photonsPerFrame);
+            // Only a frame whose timestamps arrived since the last step counts (they lag framesInFlight).
+            const uint64_t added = graph.timings().samplesAdded();
+            std::optional<double> measured;
+            if (added != m.timingSamplesSeen) measured = graph.timings().latestTotalMs("caustics.");
+            m.timingSamplesSeen = added;
+            ci.photonsPerFrame = m.photonBudget->update(measured, m.settings.causticTimeTargetMs);
+        } else {
+            m.photonBudget.reset();
+        }
         CAUSTICS_TRY(CausticOutputs co, addCausticPasses(graph, m.caustics, ci));
         out.caustics = co.radiance;
         out.firstType = co.firstType;

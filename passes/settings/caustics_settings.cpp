@@ -19,6 +19,12 @@ Status CausticsSettings::validate() const {
     if (!std::isfinite(raysPerTexel) || raysPerTexel <= 0.0f || raysPerTexel > kMaxRaysPerTexel)
         return makeError("CausticsSettings::raysPerTexel = " + std::to_string(raysPerTexel) +
                          " must be greater than 0 and at most " + std::to_string(kMaxRaysPerTexel));
+    if (photonsPerFrame > kMaxPhotonsPerFrame)
+        return outOfRange("photonsPerFrame", photonsPerFrame, 0u, kMaxPhotonsPerFrame);
+    if (!std::isfinite(causticTimeTargetMs) || causticTimeTargetMs < 0.0f || causticTimeTargetMs > kMaxCausticTimeTargetMs)
+        return outOfRange("causticTimeTargetMs", causticTimeTargetMs, 0.0f, kMaxCausticTimeTargetMs);
+    if (!std::isfinite(causticReceiverReach) || causticReceiverReach < 0.0f || causticReceiverReach > kMaxCausticReceiverReach)
+        return outOfRange("causticReceiverReach", causticReceiverReach, 0.0f, kMaxCausticReceiverReach);
     if (maxSpecularDepth < 1 || maxSpecularDepth > kMaxSpecularDepth)
         return outOfRange("maxSpecularDepth", maxSpecularDepth, 1u, kMaxSpecularDepth);
     if (maxStoredHits < 1 || maxStoredHits > kMaxStoredHits)

@@ -80,6 +80,17 @@ CAUSTICS_FN float spotLightFlux(float intensity, float cosInner, float cosOuter)
     return kTwoPi * intensity * ((1.0f - cosInner) + (cosInner - cosOuter) / 3.0f);
 }
 
+// KHR_lights_punctual's recommended range window at distance d from a point or spot light:
+// saturate(1 - (d / range)^4)^2; 1 for an infinite range (range <= 0). Direct light multiplies its
+// 1/d^2 falloff by it; a caustic deposit at distance d from its light by the same window, so no
+// caustic lands beyond the range (docs/caustics.md, "Light range").
+CAUSTICS_FN float lightRangeWindow(float distance, float range) {
+    if (range <= 0.0f) return 1.0f;
+    float r = distance / range;
+    float w = saturate(1.0f - r * r * r * r);
+    return w * w;
+}
+
 CAUSTICS_FN float photonFluxPerspective(float intensity, float texelSolidAngle, float raysPerTexel) {
     return intensity * texelSolidAngle / raysPerTexel;
 }

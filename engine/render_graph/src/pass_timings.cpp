@@ -14,6 +14,7 @@ void PassTimings::setWindow(uint32_t frames) {
 void PassTimings::add(const std::string& pass, double milliseconds) {
     auto& samples = samples_[pass];
     samples.push_back(milliseconds);
+    ++added_;
     while (samples.size() > window_) samples.pop_front();
 }
 
@@ -30,6 +31,17 @@ std::optional<double> PassTimings::latestMs(std::string_view pass) const {
     auto it = samples_.find(pass);
     if (it == samples_.end() || it->second.empty()) return std::nullopt;
     return it->second.back();
+}
+
+std::optional<double> PassTimings::latestTotalMs(std::string_view prefix) const {
+    double total = 0.0;
+    bool any = false;
+    for (auto it = samples_.lower_bound(prefix); it != samples_.end() && it->first.starts_with(prefix); ++it) {
+        if (it->second.empty()) continue;
+        total += it->second.back();
+        any = true;
+    }
+    return any ? std::optional<double>(total) : std::nullopt;
 }
 
 uint32_t PassTimings::sampleCount(std::string_view pass) const {

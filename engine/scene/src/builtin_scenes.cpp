@@ -76,12 +76,13 @@ static Scene makeTableScene() {
     return scene;
 }
 
-std::vector<std::string> builtinSceneNames() { return {"builtin", "builtin:table", "builtin:atrium"}; }
+std::vector<std::string> builtinSceneNames() { return {"builtin", "builtin:table", "builtin:atrium", "builtin:level"}; }
 
 Result<Scene> makeBuiltin(const std::string& name) {
     if (name == "builtin" || name == "builtin:table") return makeTableScene();
     if (name == "builtin:atrium") return makeAtriumScene();
-    return makeError("unknown built-in scene '" + name + "' (known: builtin, builtin:table, builtin:atrium)");
+    if (name == "builtin:level") return makeLevelScene();
+    return makeError("unknown built-in scene '" + name + "' (known: builtin, builtin:table, builtin:atrium, builtin:level)");
 }
 
 Scene makeBuiltinScene(const std::string& name) {

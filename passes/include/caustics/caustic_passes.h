@@ -1,6 +1,9 @@
 #pragma once
 // The caustic passes of the paper (Komarov et al. 2021, sections 3.2-3.4) as render-graph passes:
-//   caustics.maps      raster light-space G-buffers (one texture-array layer per caustic-forming light)
+//   caustics.maps      raster light-space G-buffers (one texture-array layer per light and cluster of
+//                      specular objects whose caustic the camera can see; caustic_map_plan.h)
+//   caustics.emitters  the specular texels of every layer, listed per layer
+//   caustics.photonPlan  each layer's photons per texel (its share of CausticsSettings::photonsPerFrame)
 //   caustics.forward   forward trace from every specular map texel; first-type splat + hit store (3.2)
 //   caustics.specularPixels  the specular camera pixels compacted into a list (the backward grid)
 //   caustics.backward  camera rays through specular pixels to the first diffuse hit -> spheres (3.3)
@@ -12,6 +15,7 @@
 // docs/caustics.md explains every choice the paper leaves open.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -19,6 +23,7 @@
 #include <glm/glm.hpp>
 
 #include "caustics/camera_constants.h"
+#include "caustics/caustic_layer_plan.h"
 #include "caustics/caustic_map_plan.h"
 #include "caustics/caustics_settings.h"
 #include "caustics/gbuffer.h"
@@ -43,7 +48,7 @@ inline constexpr uint32_t kStatRaysPerLight = 4;
 // forward dispatch covers, and launches of the gather dispatch.
 inline constexpr uint32_t kStatForwardSegments = kStatRaysPerLight + kMaxCausticLights;
 inline constexpr uint32_t kStatEmitterTexels = kStatForwardSegments + 1;
-inline constexpr uint32_t kStatDispatchedTexels = kStatForwardSegments + 2;
+inline constexpr uint32_t kStatDispatchedTexels = kStatForwardSegments + 2;   // forward launches (texels x samples)
 inline constexpr uint32_t kStatGatherLaunches = kStatForwardSegments + 3;
 // Radiance contributions the HLSL float compare-and-swap loop gave up on after its bounded attempts
 // (shaders/d3d12/forward_trace/radiance_atomics.hlsli; docs/d3d12.md). Always 0 on Vulkan.
@@ -141,6 +146,9 @@ struct CausticFrameInputs {
     CausticViewHistory* history = nullptr;
     // The scene TLAS as a graph resource when it is rebuilt this frame (frame_context.h); else invalid.
     rg::RgAccelStruct sceneTlas;
+    // This frame's photon budget when the module steers it (CausticsSettings::causticTimeTargetMs);
+    // none: settings.photonsPerFrame.
+    std::optional<uint32_t> photonsPerFrame;
 };
 
 struct CausticOutputs {
@@ -151,6 +159,7 @@ struct CausticOutputs {
     rg::RgBuffer secondTypeBuffer;
     rg::RgBuffer hits;          // CausticHit[maxStoredHits]
     rg::RgBuffer stats;         // uint32[kStatCount]
+    rg::RgBuffer layerPlans;    // CausticLayerPlanGpu per plan.maps entry (invalid without maps)
     rg::RgBuffer spheres;       // CausticSphere[W x H], the first min(kStatSpheres, kStatSphereCapacity)
                                 // valid (invalid when the second type did not run)
     rg::RgTexture mapObjectIds; // R32_UINT array, one layer per planned map (instance + 1; invalid if none)
@@ -161,6 +170,10 @@ struct CausticOutputs {
 // Radiance values in the fixed-point fallback buffers are round(value * kFixedPointScale) as uint32
 // (cd/m^2 x 2^16: resolution 1.5e-5 cd/m^2, saturation at 65535 cd/m^2 per pixel and frame).
 inline constexpr float kFixedPointScale = 65536.0f;
+
+// Upper bound of the forward pass's ray launches for the plan (the device-limit check and the grid of a
+// device without indirect ray dispatch).
+uint64_t forwardLaunchBound(const CausticsSettings& settings, const CausticMapPlan& plan);
 
 Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources& persistent,
                                         const CausticFrameInputs& inputs);

@@ -32,6 +32,19 @@ enum class CausticsAov : uint8_t {
 struct CausticsSettings {
     uint32_t mapResolution = 512;       // caustic visibility map side, texels
     float raysPerTexel = 1.0f;          // fractional: a stochastic subset of texels emits
+    // Photon budget (docs/caustics.md, "Photon budget"). 0: the paper's emission, raysPerTexel photons
+    // at every emitting texel of every layer whose caustic the camera can see. > 0: this many photons
+    // per frame in all, split over those layers by how much of the image their receivers cover, so the
+    // cost follows the caustics in view, not the level. Unbiased either way (each photon carries its
+    // texel's flux over the texel's expected photon count).
+    uint32_t photonsPerFrame = 0;
+    // > 0: the module steers photonsPerFrame (its start value; 2^18 when 0) so that the caustic passes
+    // take this many GPU milliseconds, from the graph's timestamps of earlier frames (photon_budget.h).
+    float causticTimeTargetMs = 0.0f;
+    // A cluster's caustic is assumed to land within this many cluster radii of its bounding sphere
+    // (view culling and the budget's weights; caustics/caustic_importance.h). Larger: fewer caustics
+    // lost off screen (a mirror's reflected patch far away), more photons spent on hidden ones.
+    float causticReceiverReach = 4.0f;
     uint32_t maxSpecularDepth = 4;      // specular events per caustic path
     bool russianRoulette = true;        // after the second event, by path throughput
     bool secondType = true;             // caustics seen through specular objects
@@ -79,6 +92,9 @@ struct CausticsSettings {
     // Limits beyond which a setting is refused (not clamped).
     static constexpr uint32_t kMaxMapResolution = 8192;
     static constexpr float kMaxRaysPerTexel = 256.0f;
+    static constexpr uint32_t kMaxPhotonsPerFrame = 1u << 28;
+    static constexpr float kMaxCausticTimeTargetMs = 1000.0f;
+    static constexpr float kMaxCausticReceiverReach = 1000.0f;
     static constexpr uint32_t kMaxSpecularDepth = 31;
     static constexpr uint32_t kMaxStoredHits = 1u << 26;
     static constexpr uint32_t kMaxFramesInFlight = 16;

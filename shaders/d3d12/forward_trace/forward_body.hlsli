@@ -8,6 +8,7 @@
 #include "common/volume.h"
 #include "caustic_maps/caustic_map.hlsli"
 #include "caustic_maps/emitter_list.hlsli"
+#include "caustic_maps/layer_plan.hlsli"
 #include "forward_trace/caustic_hit.hlsli"
 
 struct CameraBlock { CameraConstants camera; };
@@ -18,14 +19,16 @@ Texture2D<float4> gLinearDepth : register(t3, space1);
 Texture2D<uint> gObjectId : register(t4, space1);
 RWByteAddressBuffer hits : register(u6, space1);
 RWByteAddressBuffer stats : register(u7, space1);
+RWByteAddressBuffer plans : register(u8, space1);
+ByteAddressBuffer owners : register(t9, space1);
 #define RADIANCE_REGISTER u5
 #define RADIANCE_SPACE space1
 #include "forward_trace/radiance_atomics.hlsli"
 
 struct Push {
     uint mapSize;
-    uint samplesPerTexel;
-    float raysPerTexel;
+    uint layers;
+    uint instanceCount;   // row length of owners
     uint maxDepth;
     uint frame;
     uint flags;   // bit 0: Russian roulette
@@ -68,20 +71,27 @@ void splatFirstType(CameraConstants camera, float3 x, float3 nFacing, uint objec
 [shader("raygeneration")]
 void main() {
     CameraConstants camera = cameraBlock.camera;
-    uint3 id = DispatchRaysIndex();
-    if (all(id == uint3(0u, 0u, 0u))) statAdd(kStatDispatchedTexels, DispatchRaysDimensions().x);
-    if (id.x >= stats.Load(4u * kStatEmitterTexels)) return;
-    uint packed = emitters.Load(4u * id.x);
+    uint launch = DispatchRaysIndex().x;
+    if (launch == 0u) statAdd(kStatDispatchedTexels, DispatchRaysDimensions().x);
+    int layer = -1;
+    for (uint k = 0u; k < pc.layers && layer < 0; ++k)
+        if (launch - plans.Load(layerPlanAddress(k, kLayerPlanLaunchOffset)) < plans.Load(layerPlanAddress(k, kLayerPlanLaunches)))
+            layer = int(k);
+    if (layer < 0) return;
+    uint local = launch - plans.Load(layerPlanAddress(uint(layer), kLayerPlanLaunchOffset));
+    uint emitterCount = plans.Load(layerPlanAddress(uint(layer), kLayerPlanEmitters));
+    uint packed = emitters.Load(4u * (uint(layer) * pc.mapSize * pc.mapSize + local % emitterCount));
     uint tx = emitterTexel(packed).x;
     uint ty = emitterTexel(packed).y;
-    int layer = int(emitterLayer(packed));
-    uint sampleIndex = id.y;
+    uint sampleIndex = local / emitterCount;
+    float raysPerTexel = asfloat(plans.Load(layerPlanAddress(uint(layer), kLayerPlanRaysPerTexel)));
     CausticMap m = loadCausticMap(maps, uint(layer));
 
-    Rng rng = rngCreate(ty * pc.mapSize + tx, m.light, sampleIndex, pc.frame);
-    float emitProbability = clamp(pc.raysPerTexel - float(sampleIndex), 0.0f, 1.0f);
+    Rng rng = rngCreate(ty * pc.mapSize + tx, m.light | (m.cluster << 6), sampleIndex, pc.frame);
+    float emitProbability = clamp(raysPerTexel - float(sampleIndex), 0.0f, 1.0f);
     if (emitProbability < 1.0f && rngNextFloat(rng) >= emitProbability) return;
     statAdd(kStatRaysPerLight + m.light, 1u);
+    plans.InterlockedAdd(layerPlanAddress(uint(layer), kLayerPlanEmitted), 1u);
 
     float2 coord = float2(tx, ty) + rngNextFloat2(rng);
     float n = float(pc.mapSize);
@@ -90,14 +100,14 @@ void main() {
         float2 q = m.extent * (2.0f * coord / n - 1.0f);
         origin = m.origin + q.x * m.right + q.y * m.up;
         dir = m.forward;
-        flux = m.intensity * photonFluxOrthographic(1.0f, orthographicTexelArea(m.extent, n), pc.raysPerTexel);
+        flux = m.intensity * photonFluxOrthographic(1.0f, orthographicTexelArea(m.extent, n), raysPerTexel);
     } else {
         float2 q = perspectiveMapPlanePoint(coord, n, m.extent);
         origin = m.origin;
         dir = normalize(m.forward + q.x * m.right + q.y * m.up);
         float omega = perspectiveTexelSolidAngle(uint2(tx, ty), n, m.extent);
         float falloff = m.cosOuter > -1.0f ? spotAttenuation(dot(dir, m.spotAxis), m.cosInner, m.cosOuter) : 1.0f;
-        flux = m.intensity * (falloff * photonFluxPerspective(1.0f, omega, pc.raysPerTexel));
+        flux = m.intensity * (falloff * photonFluxPerspective(1.0f, omega, raysPerTexel));
     }
     if (max(flux.x, max(flux.y, flux.z)) <= 0.0f) return;
 
@@ -125,6 +135,10 @@ void main() {
         float3 ng = dot(h.shadingNormal, h.geometricNormal) < 0.0f ? -h.geometricNormal : h.geometricNormal;
         float eps = rayEpsilon(x);
         if (sceneMaterialIsSpecular(h.material)) {
+            // A direction belongs to the layer owning the first specular instance on it (forward_body.glsl).
+            if (events == 0u && (payload.instance >= pc.instanceCount ||
+                                 !causticLayerOwns(owners, m, pc.instanceCount, payload.instance)))
+                break;
             if (events >= pc.maxDepth) break;
             SpecularEvent ev = sampleSpecularEvent(dir, h.shadingNormal, h.optics, rngNextFloat3(rng), kTransportImportance);
             if (ev.kind == kEventAbsorbed) break;
@@ -147,6 +161,8 @@ void main() {
         }
         if (events == 0u) break;
         float3 nFacing = dot(h.shadingNormal, dir) < 0.0f ? h.shadingNormal : -h.shadingNormal;
+        if (m.orthographic == 0u) flux *= lightRangeWindow(length(x - m.origin), m.range);
+        if (max(flux.x, max(flux.y, flux.z)) <= 0.0f) break;
         BrdfMaterial brdf = receiverBrdfMaterial(h);
         uint slot;
         statAdd(kStatStoredHitAttempts, 1u, slot);

@@ -1,5 +1,6 @@
 // Forward caustic trace (paper 3.2, Figure 4): one launch per (emitting map texel, sample), the texels
-// listed by caustics.emitters (caustic_maps/emitters.comp). Shared by forward.rgen (float atomics) and
+// listed per layer by caustics.emitters (caustic_maps/emitters.comp), the launches laid out per layer
+// by caustics.photonPlan (caustic_maps/photon_plan.comp). Shared by forward.rgen (float atomics) and
 // forward_fixed.rgen (fixed-point atomics).
 #extension GL_EXT_ray_tracing : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -10,6 +11,7 @@
 #include "common/volume.h"
 #include "caustic_maps/caustic_map.glsl"
 #include "caustic_maps/emitter_list.glsl"
+#include "caustic_maps/layer_plan.glsl"
 #include "forward_trace/caustic_hit.glsl"
 
 layout(set = 1, binding = 0) uniform CameraBlock { CameraConstants camera; };
@@ -19,14 +21,16 @@ layout(set = 1, binding = 3) uniform texture2D gLinearDepth;
 layout(set = 1, binding = 4) uniform utexture2D gObjectId;
 layout(set = 1, binding = 6, std430) buffer Hits { CausticHit hits[]; };
 layout(set = 1, binding = 7, std430) buffer Stats { uint stats[]; };
+layout(set = 1, binding = 8, std430) buffer Plans { CausticLayerPlan plans[]; };
+layout(set = 1, binding = 9, std430) readonly buffer Owners { uint owners[]; };
 #define RADIANCE_SET 1
 #define RADIANCE_BINDING 5
 #include "forward_trace/radiance_atomics.glsl"
 
 layout(push_constant) uniform Push {
     uint mapSize;
-    uint samplesPerTexel;   // ceil(raysPerTexel)
-    float raysPerTexel;
+    uint layers;
+    uint instanceCount;     // row length of owners
     uint maxDepth;
     uint frame;
     uint flags;             // bit 0: Russian roulette
@@ -68,23 +72,32 @@ void splatFirstType(CausticHit hit) {
 }
 
 void main() {
-    uvec3 id = gl_LaunchIDEXT;
-    if (id == uvec3(0u)) atomicAdd(stats[kStatDispatchedTexels], gl_LaunchSizeEXT.x);
-    // A direct (not indirect) dispatch covers the list's capacity: launches past its length idle.
-    if (id.x >= stats[kStatEmitterTexels]) return;
-    uint packed = emitters[id.x];
+    uint launch = gl_LaunchIDEXT.x;
+    if (launch == 0u) atomicAdd(stats[kStatDispatchedTexels], gl_LaunchSizeEXT.x);
+    // The layer whose launch range holds this launch; a direct (not indirect) dispatch covers an upper
+    // bound, and launches past the last range idle.
+    int layer = -1;
+    for (uint k = 0u; k < pc.layers && layer < 0; ++k)
+        if (launch - plans[k].launchOffset < plans[k].launches) layer = int(k);
+    if (layer < 0) return;
+    uint local = launch - plans[layer].launchOffset;
+    uint emitterCount = plans[layer].emitters;
+    uint packed = emitters[uint(layer) * pc.mapSize * pc.mapSize + local % emitterCount];
     uint tx = emitterTexel(packed).x;
     uint ty = emitterTexel(packed).y;
-    int layer = int(emitterLayer(packed));
-    uint sampleIndex = id.y;
+    uint sampleIndex = local / emitterCount;
+    float raysPerTexel = plans[layer].raysPerTexel;
     CausticMap m = maps[layer];
 
-    Rng rng = rngCreate(ty * pc.mapSize + tx, m.light, sampleIndex, pc.frame);
+    // The key of a texel's random stream: its light and, for a light's second and later layers, the
+    // layer's number (the first layer keeps the light alone, as with one map per light).
+    Rng rng = rngCreate(ty * pc.mapSize + tx, m.light | (m.cluster << 6), sampleIndex, pc.frame);
     // Fractional rays per texel: sample s of a texel is emitted with probability clamp(r - s, 0, 1),
     // so a texel emits r rays on average; each carries 1/r of the texel's flux (unbiased).
-    float emitProbability = clamp(pc.raysPerTexel - float(sampleIndex), 0.0, 1.0);
+    float emitProbability = clamp(raysPerTexel - float(sampleIndex), 0.0, 1.0);
     if (emitProbability < 1.0 && rngNextFloat(rng) >= emitProbability) return;
     atomicAdd(stats[kStatRaysPerLight + m.light], 1u);
+    atomicAdd(plans[layer].emitted, 1u);
 
     vec2 coord = vec2(tx, ty) + rngNextFloat2(rng);
     float n = float(pc.mapSize);
@@ -93,14 +106,14 @@ void main() {
         vec2 q = m.extent * (2.0 * coord / n - 1.0);
         origin = m.origin + q.x * m.right + q.y * m.up;
         dir = m.forward;
-        flux = m.intensity * photonFluxOrthographic(1.0, orthographicTexelArea(m.extent, n), pc.raysPerTexel);
+        flux = m.intensity * photonFluxOrthographic(1.0, orthographicTexelArea(m.extent, n), raysPerTexel);
     } else {
         vec2 q = perspectiveMapPlanePoint(coord, n, m.extent);
         origin = m.origin;
         dir = normalize(m.forward + q.x * m.right + q.y * m.up);
         float omega = perspectiveTexelSolidAngle(uvec2(tx, ty), n, m.extent);
         float falloff = m.cosOuter > -1.0 ? spotAttenuation(dot(dir, m.spotAxis), m.cosInner, m.cosOuter) : 1.0;
-        flux = m.intensity * (falloff * photonFluxPerspective(1.0, omega, pc.raysPerTexel));
+        flux = m.intensity * (falloff * photonFluxPerspective(1.0, omega, raysPerTexel));
     }
     if (max(flux.x, max(flux.y, flux.z)) <= 0.0) return;
 
@@ -119,6 +132,11 @@ void main() {
         vec3 ng = dot(h.shadingNormal, h.geometricNormal) < 0.0 ? -h.geometricNormal : h.geometricNormal;
         float eps = rayEpsilon(x);
         if (sceneMaterialIsSpecular(h.material)) {
+            // A direction belongs to the layer owning the first specular instance on it; another
+            // layer of the light emits it (caustic_map_plan.h), or none when that one is hidden.
+            if (events == 0u && (payload.instance >= pc.instanceCount ||
+                                 !CAUSTIC_LAYER_OWNS(owners, m, pc.instanceCount, payload.instance)))
+                break;
             if (events >= pc.maxDepth) break;
             SpecularEvent ev = sampleSpecularEvent(dir, h.shadingNormal, h.optics, rngNextFloat3(rng), kTransportImportance);
             if (ev.kind == kEventAbsorbed) break;
@@ -141,6 +159,9 @@ void main() {
         }
         if (events == 0u) break;   // direct light, not a caustic
         vec3 nFacing = dot(h.shadingNormal, dir) < 0.0 ? h.shadingNormal : -h.shadingNormal;
+        // The light's range window at the receiver, as direct light applies it (no caustic beyond range).
+        if (m.orthographic == 0u) flux *= lightRangeWindow(length(x - m.origin), m.range);
+        if (max(flux.x, max(flux.y, flux.z)) <= 0.0) break;
         CausticHit hit = makeCausticHit(x, h.objectId, nFacing, m.light, flux, -dir, receiverBrdfMaterial(h));
         uint slot = atomicAdd(stats[kStatStoredHitAttempts], 1u);
         if (slot < pc.maxStoredHits) hits[slot] = hit;

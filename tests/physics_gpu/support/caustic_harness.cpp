@@ -103,6 +103,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
             graph.markOutput(out.stats, ResourceState::CopySource);
             if (out.hits.valid()) graph.markOutput(out.hits, ResourceState::CopySource);
             if (out.spheres.valid()) graph.markOutput(out.spheres, ResourceState::CopySource);
+            if (out.layerPlans.valid()) graph.markOutput(out.layerPlans, ResourceState::CopySource);
         } else {
             graph.markOutput(out.radiance);
         }
@@ -124,6 +125,8 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         const uint64_t hitBytes = uint64_t(settings.maxStoredHits) * sizeof(CausticHit);
         CAUSTICS_TRY(BufferHandle rbHits, readbackBuffer(device, out.hits.valid() ? hitBytes : 4));
         CAUSTICS_TRY(BufferHandle rbSpheres, readbackBuffer(device, out.spheres.valid() ? pixels * sizeof(CausticSphere) : 4));
+        const uint64_t planBytes = std::max<uint64_t>(out.plan.maps.size(), 1) * sizeof(CausticLayerPlanGpu);
+        CAUSTICS_TRY(BufferHandle rbPlans, readbackBuffer(device, planBytes));
         CAUSTICS_TRY(CommandListHandle copy, device.createCommandList());
         copy->begin();
         copy->copyTextureToBuffer(rbFirst, 0, graph.texture(out.firstType));
@@ -134,6 +137,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         copy->copyBuffer(rbStats, 0, graph.buffer(out.stats), 0, kStatCount * 4);
         if (out.hits.valid()) copy->copyBuffer(rbHits, 0, graph.buffer(out.hits), 0, hitBytes);
         if (out.spheres.valid()) copy->copyBuffer(rbSpheres, 0, graph.buffer(out.spheres), 0, pixels * sizeof(CausticSphere));
+        if (out.layerPlans.valid()) copy->copyBuffer(rbPlans, 0, graph.buffer(out.layerPlans), 0, planBytes);
         copy->end();
         CAUSTICS_TRY(uint64_t copyFence, device.submit(copy));
         CAUSTICS_CHECK(device.waitForFence(copyFence));
@@ -149,6 +153,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         if (out.spheres.valid())
             run.spheres = fetch<CausticSphere>(device, rbSpheres, std::min(run.stats[kStatSpheres], run.stats[kStatSphereCapacity]));
         run.plan = out.plan;
+        if (out.layerPlans.valid()) run.layerPlans = fetch<CausticLayerPlanGpu>(device, rbPlans, out.plan.maps.size());
     }
     CAUSTICS_CHECK(device.waitIdle());
     return run;

@@ -22,6 +22,7 @@ struct CausticRun {
     std::vector<float> linearDepth;
     std::vector<uint32_t> objectId;
     CausticMapPlan plan;
+    std::vector<CausticLayerPlanGpu> layerPlans;             // one per plan.maps entry
 
     uint32_t raysOfLight(uint32_t light) const { return stats[kStatRaysPerLight + light]; }
     const glm::vec3& at(const std::vector<glm::vec3>& img, uint32_t x, uint32_t y) const { return img[size_t(y) * width + x]; }

@@ -20,10 +20,16 @@ public:
     std::optional<double> medianMs(std::string_view pass) const;
     std::optional<double> latestMs(std::string_view pass) const;   // the newest sample (history plots)
     uint32_t sampleCount(std::string_view pass) const;
+    // Sum of the newest sample of every pass whose name starts with `prefix` (e.g. "caustics."): one
+    // frame's cost of a pass family; none when no such pass was timed.
+    std::optional<double> latestTotalMs(std::string_view prefix) const;
+    // Samples ever added (never capped by the window): tells a new measurement from an old one.
+    uint64_t samplesAdded() const { return added_; }
     void clear() { samples_.clear(); }
 
 private:
     uint32_t window_;
+    uint64_t added_ = 0;
     std::map<std::string, std::deque<double>, std::less<>> samples_;
 };
 

@@ -12,11 +12,23 @@
 
 namespace caustics::scene {
 
-// "builtin" / "builtin:table", "builtin:atrium". Unknown names give an error listing the known ones.
+// "builtin" / "builtin:table", "builtin:atrium", "builtin:level". Unknown names give an error listing the
+// known ones.
 Result<Scene> makeBuiltin(const std::string& name);
 // As makeBuiltin, but an unknown name yields the table scene (with a logged warning).
 Scene makeBuiltinScene(const std::string& name);
 std::vector<std::string> builtinSceneNames();
+
+// The game-level stand-in (builtin_level.cpp): `objects` specular objects of five kinds (glass ball,
+// window pane, water basin, metal ring, brass plate), each with a wall behind it, on a jittered grid over
+// an extent x extent metre court; a sun plus 8 spot and 8 point lights with a 15 m range.
+struct LevelSceneDesc {
+    uint32_t objects = 36;
+    float extent = 200.0f;
+    uint32_t seed = 1;
+    float sunIlluminance = 1.0f;   // lux (the scene's exposure is its inverse)
+};
+Scene makeLevelScene(const LevelSceneDesc& desc = {});
 
 // Where addCausticObjects puts the group: `origin` is the point on the supporting surface at the
 // centre of the group; the group's table-scene layout (about 0.5 m across) is scaled by `scale`.
