@@ -13,11 +13,18 @@ ConstantBuffer<Push> pc : register(b0, space999);
 
 [numthreads(1, 1, 1)]
 void main() {
+    // A layer without emitting texels gives its share to the others in proportion (photon_plan.comp).
+    float planned = 0.0f, live = 0.0f;
+    for (uint j = 0u; j < pc.layers; ++j) {
+        planned += layerPhotons(maps, j);
+        if (plans.Load(layerPlanAddress(j, kLayerPlanEmitters)) > 0u) live += layerPhotons(maps, j);
+    }
+    float scale = live > 0.0f ? planned / live : 0.0f;
     uint offset = 0u;
     for (uint k = 0u; k < pc.layers; ++k) {
         uint e = plans.Load(layerPlanAddress(k, kLayerPlanEmitters));
-        float photons = layerPhotons(maps, k);
-        float r = photons > 0.0f ? (e > 0u ? photons / float(e) : 0.0f) : pc.raysPerTexel;
+        float photons = layerPhotons(maps, k) * scale;
+        float r = layerPhotons(maps, k) > 0.0f ? (e > 0u ? photons / float(e) : 0.0f) : pc.raysPerTexel;
         uint s = uint(ceil(r));
         plans.Store(layerPlanAddress(k, kLayerPlanRaysPerTexel), asuint(r));
         plans.Store(layerPlanAddress(k, kLayerPlanSamplesPerTexel), s);

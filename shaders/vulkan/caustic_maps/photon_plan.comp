@@ -17,11 +17,19 @@ layout(set = 0, binding = 2, std430) writeonly buffer Args { uint args[]; };   /
 layout(push_constant) uniform Push { uint layers; float raysPerTexel; } pc;
 
 void main() {
+    // A layer whose map lists no emitting texel (its objects hidden from the light after all) gives its
+    // share to the others in proportion: the budget is spent whole, and the split stays a weighting.
+    float planned = 0.0, live = 0.0;
+    for (uint k = 0u; k < pc.layers; ++k) {
+        planned += maps[k].photons;
+        if (plans[k].emitters > 0u) live += maps[k].photons;
+    }
+    float scale = live > 0.0 ? planned / live : 0.0;
     uint offset = 0u;
     for (uint k = 0u; k < pc.layers; ++k) {
         uint e = plans[k].emitters;
-        float photons = maps[k].photons;
-        float r = photons > 0.0 ? (e > 0u ? photons / float(e) : 0.0) : pc.raysPerTexel;
+        float photons = maps[k].photons * scale;
+        float r = maps[k].photons > 0.0 ? (e > 0u ? photons / float(e) : 0.0) : pc.raysPerTexel;
         uint s = uint(ceil(r));
         plans[k].raysPerTexel = r;
         plans[k].samplesPerTexel = s;

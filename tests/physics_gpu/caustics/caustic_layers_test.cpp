@@ -113,9 +113,10 @@ TEST_F(CausticLayersGpu, FarObjectsOutOfViewLeaveTheBallsCausticAsCleanAsAlone) 
     EXPECT_EQ(emitted(far1.value()), emitted(alone1.value())) << "the ball's layer emits the same photons";
 }
 
-// Two balls 6 m apart, both in view, under a 60k-photon budget: each layer emits its coverage share of
-// the budget (binomial-like spread: a few hundred photons), and each ball's caustic energy matches the
-// paper's per-texel emission at 4 rays per texel within the noise (3 %), whatever the split.
+// Two balls 6 m apart, both in view, under a 240k-photon budget: each layer emits its coverage share of
+// the budget (fractional rounding: a few hundred photons), and each ball's caustic energy matches the
+// paper's per-texel emission at 16 rays per texel within 3 %, whatever the split (measured 0.9993 and
+// 1.0055; at a quarter of the photons 1.0019 and 0.9707: the bound is about 4 sd of this run's noise).
 TEST_F(CausticLayersGpu, BudgetSharesFollowCoverageAndEnergyIsUnbiased) {
     scene::Scene sc = ballScene(false);
     scene::Instance second = sc.instances[firstSpecular(sc)];
@@ -126,9 +127,9 @@ TEST_F(CausticLayersGpu, BudgetSharesFollowCoverageAndEnergyIsUnbiased) {
     cam.target = {3.0f, 0.0f, 0.0f};
     cam.verticalFovRadians = glm::radians(50.0f);
     CausticsSettings budget = layerSettings();
-    budget.photonsPerFrame = 60000;
+    budget.photonsPerFrame = 240000;
     CausticsSettings perTexel = layerSettings();
-    perTexel.raysPerTexel = 4.0f;
+    perTexel.raysPerTexel = 16.0f;
     auto b = runCaustics(*device, sc, cam, kSize, kSize, budget);
     auto p = runCaustics(*device, sc, cam, kSize, kSize, perTexel);
     ASSERT_TRUE(b) << b.message();
@@ -137,7 +138,7 @@ TEST_F(CausticLayersGpu, BudgetSharesFollowCoverageAndEnergyIsUnbiased) {
     ASSERT_EQ(b->layerPlans.size(), 2u);
     const double coverageSum = b->plan.coverage[0] + b->plan.coverage[1];
     for (size_t k = 0; k < 2; ++k) {
-        const double expected = 60000.0 * b->plan.coverage[k] / coverageSum;
+        const double expected = 240000.0 * b->plan.coverage[k] / coverageSum;
         std::printf("[ measured ] layer %zu: coverage %.4f, %u photons emitted, %.0f planned, %u emitting texels\n", k,
                     b->plan.coverage[k], b->layerPlans[k].emitted, expected, b->layerPlans[k].emitters);
         // Fractional emission: each texel's last photon is a Bernoulli draw, sd <= sqrt(texels) / 2.
@@ -160,8 +161,8 @@ TEST_F(CausticLayersGpu, BudgetSharesFollowCoverageAndEnergyIsUnbiased) {
     }
 }
 
-// The level scene: whatever the object count, the photons emitted stay within the budget (its
-// fractional rounding aside), and lights whose every cluster is out of view emit nothing.
+// The level scene: whatever the object count, the photons emitted are the budget (its fractional
+// rounding aside), and lights whose every cluster is out of view emit nothing.
 TEST_F(CausticLayersGpu, LevelSceneKeepsTheBudgetAndSpendsNothingOutOfView) {
     for (uint32_t objects : {12u, 48u}) {
         scene::LevelSceneDesc d;
@@ -179,8 +180,10 @@ TEST_F(CausticLayersGpu, LevelSceneKeepsTheBudgetAndSpendsNothingOutOfView) {
         std::printf("[ measured ] level with %u objects: %zu layers, %u hidden clusters, %llu photons emitted of 30000\n",
                     objects, r->plan.maps.size(), r->plan.hiddenClusters, (unsigned long long)photons);
         EXPECT_GT(r->plan.hiddenClusters, 0u);
-        EXPECT_LE(double(photons), 30000.0 + 3.0 * std::sqrt(double(texels)) + double(r->plan.maps.size()));
-        EXPECT_GT(photons, 0u);
+        // Spent whole too: a layer whose map lists no texel hands its share to the others.
+        const double spread = 3.0 * std::sqrt(double(texels)) + double(r->plan.maps.size());
+        EXPECT_LE(double(photons), 30000.0 + spread);
+        EXPECT_GE(double(photons), 30000.0 - spread);
         std::vector<bool> lit(level.lights.size(), false);
         for (const CausticMapGpu& m : r->plan.maps) lit[m.light] = true;
         for (uint32_t l = 0; l < level.lights.size(); ++l)
@@ -190,7 +193,7 @@ TEST_F(CausticLayersGpu, LevelSceneKeepsTheBudgetAndSpendsNothingOutOfView) {
     }
 }
 
-// KHR_lights_punctual range: a point light 1.5 m over the ball with a 2.2 m range. Every stored caustic
+// KHR_lights_punctual range: a point light 1.5 m over the ball (2.5 m over the floor) with a 2.7 m range. Every stored caustic
 // hit (a deposit past the range carries no flux and is not stored) lies within the range; with an
 // infinite range some lie beyond it (so the check can fail).
 TEST_F(CausticLayersGpu, PointLightRangePutsNoCausticBeyondIt) {
@@ -200,7 +203,7 @@ TEST_F(CausticLayersGpu, PointLightRangePutsNoCausticBeyondIt) {
     point.type = scene::LightType::Point;
     point.position = {0.3f, 2.5f, 0.0f};
     point.intensity = 20.0f;
-    const float range = 2.2f;
+    const float range = 2.7f;
     CausticsSettings s = layerSettings();
     auto beyond = [&](const CausticRun& r) {
         uint32_t n = 0, lit = 0;
@@ -223,6 +226,7 @@ TEST_F(CausticLayersGpu, PointLightRangePutsNoCausticBeyondIt) {
     std::printf("[ measured ] hits beyond %.1f m: infinite range %u of %u, range %.1f m %u of %u\n", range, farInfinite,
                 litInfinite, range, farRanged, litRanged);
     EXPECT_GT(farInfinite, 100u);
+    EXPECT_LT(farInfinite, litInfinite) << "part of the caustic lies inside the range";
     EXPECT_GT(litRanged, 100u);
     EXPECT_EQ(farRanged, 0u);
 }
