@@ -15,6 +15,8 @@ CausticsSettings benchSettings(const BenchOptions& o) {
     s.maxSpecularDepth = o.maxDepth;
     s.filter = o.filter;
     s.mapOccluders = o.mapOccluders;
+    s.photonsPerFrame = o.photons;
+    s.causticTimeTargetMs = o.timeTargetMs;
     return s;
 }
 

@@ -11,6 +11,9 @@ std::span<const BenchMode> benchModes() {
          runSweepMode},
         {"figures", "the caustic images of Figures 10 and 12 (each rays per texel and depth) as PFM files under --out",
          runFiguresMode},
+        {"level", "the game-level stand-in: object count, extent and photon budget sweeps, and 60 frames of a moving "
+                  "camera under a GPU-time target, as CSV under --out",
+         runLevelMode},
     };
     return kModes;
 }

@@ -80,6 +80,10 @@ Status setOption(BenchOptions& o, std::string_view flag, std::string_view value)
             start = end + 1;
         }
         o.sweeps = list;
+    } else if (flag == "--photons") {
+        CAUSTICS_TRY(o.photons, parseCount(flag, value, 0, CausticsSettings::kMaxPhotonsPerFrame));
+    } else if (flag == "--time-target") {
+        CAUSTICS_TRY(o.timeTargetMs, parsePositive(flag, value, CausticsSettings::kMaxCausticTimeTargetMs));
     } else if (flag == "--reference-frames") {
         CAUSTICS_TRY(o.referenceFrames, parseCount(flag, value, 1, 4096));
     } else {
@@ -107,6 +111,8 @@ std::string benchUsage() {
         "  --out DIR                   sweep, figures: folder for the CSV / PFM files (created)\n"
         "  --reference-frames N        sweep: frames of 16 rays per texel in the quality reference (default 16)\n"
         "  --sweeps LIST               sweep: any of lights,rays,depth,map,image (default all)\n"
+        "  --photons N                 photons per frame split over the layers in view (0 .. 2^28; 0: per texel)\n"
+        "  --time-target MS            steer the photons so the caustic passes take MS ms (level mode: 1)\n"
         "modes:\n";
     for (const BenchMode& mode : benchModes()) text += "  " + std::string(mode.name) + "  " + mode.summary + "\n";
     return text;
@@ -127,6 +133,7 @@ Result<BenchOptions> parseBenchOptions(int argc, char** argv) {
     }
     if (options.mode == "sweep" && options.outDir.empty()) return makeError("sweep: --out DIR is required");
     if (options.mode == "figures" && options.outDir.empty()) return makeError("figures: --out DIR is required");
+    if (options.mode == "level" && options.outDir.empty()) return makeError("level: --out DIR is required");
     return options;
 }
 

@@ -29,6 +29,8 @@ struct BenchOptions {
     std::string outDir;             // sweep: where the CSV files go
     uint32_t referenceFrames = 16;  // sweep: frames of the converged reference (x 16 rays per texel)
     std::string sweeps = "lights,rays,depth,map,image";   // sweep: which parameters to vary
+    uint32_t photons = 0;           // CausticsSettings::photonsPerFrame (0: per-texel emission)
+    float timeTargetMs = 0.0f;      // CausticsSettings::causticTimeTargetMs (level mode default 1 ms)
 };
 
 // Limits (inclusive) beyond which a flag is refused.
