@@ -56,6 +56,9 @@ const std::map<std::string, Setter>& setters() {
     static const std::map<std::string, Setter> table = {
         {"mapResolution", countField(&CausticsSettings::mapResolution)},
         {"raysPerTexel", floatField(&CausticsSettings::raysPerTexel)},
+        {"photonsPerFrame", countField(&CausticsSettings::photonsPerFrame)},
+        {"causticTimeTargetMs", floatField(&CausticsSettings::causticTimeTargetMs)},
+        {"causticReceiverReach", floatField(&CausticsSettings::causticReceiverReach)},
         {"maxSpecularDepth", countField(&CausticsSettings::maxSpecularDepth)},
         {"russianRoulette", boolField(&CausticsSettings::russianRoulette)},
         {"secondType", boolField(&CausticsSettings::secondType)},
