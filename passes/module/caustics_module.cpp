@@ -29,9 +29,8 @@ struct CausticsModule::Impl {
     std::optional<CompositePass> composite;
     CausticResources caustics;
     bool causticsReady = false;
-    // CausticsSettings::causticTimeTargetMs: the steered budget and the graph's sample count it last saw.
+    // CausticsSettings::causticTimeTargetMs: the steered budget (photon_budget.h).
     std::optional<PhotonBudgetController> photonBudget;
-    uint64_t timingSamplesSeen = 0;
 };
 
 CausticsModule::CausticsModule(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -193,16 +192,19 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         ci.history = &view.history;
         if (m.settings.causticTimeTargetMs > 0.0f) {
             if (!m.photonBudget) m.photonBudget.emplace(m.settings.photonsPerFrame);
-            // Only a frame whose timestamps arrived since the last step counts (they lag framesInFlight).
-            const uint64_t added = graph.timings().samplesAdded();
-            std::optional<double> measured;
-            if (added != m.timingSamplesSeen) measured = graph.timings().latestTotalMs("caustics.");
-            m.timingSamplesSeen = added;
-            ci.photonsPerFrame = m.photonBudget->update(measured, m.settings.causticTimeTargetMs);
+            const rg::PassTimings& t = graph.timings();
+            std::optional<CausticTimeSample> sample;
+            if (const uint64_t timed = t.samplesAdded("caustics.forward"); timed > 0) {
+                sample = CausticTimeSample{timed - 1, t.latestTotalMs("caustics.").value_or(0.0),
+                                           t.latestMs("caustics.forward").value_or(0.0) +
+                                               t.latestMs("caustics.gather").value_or(0.0)};
+            }
+            ci.photonsPerFrame = m.photonBudget->update(sample, m.settings.causticTimeTargetMs);
         } else {
             m.photonBudget.reset();
         }
         CAUSTICS_TRY(CausticOutputs co, addCausticPasses(graph, m.caustics, ci));
+        if (m.photonBudget && !co.plan.maps.empty()) m.photonBudget->planFrame();   // this frame has a forward pass
         out.caustics = co.radiance;
         out.firstType = co.firstType;
         out.secondType = co.secondType;

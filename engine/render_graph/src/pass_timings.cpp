@@ -14,7 +14,7 @@ void PassTimings::setWindow(uint32_t frames) {
 void PassTimings::add(const std::string& pass, double milliseconds) {
     auto& samples = samples_[pass];
     samples.push_back(milliseconds);
-    ++added_;
+    ++added_[pass];
     while (samples.size() > window_) samples.pop_front();
 }
 
@@ -42,6 +42,11 @@ std::optional<double> PassTimings::latestTotalMs(std::string_view prefix) const 
         any = true;
     }
     return any ? std::optional<double>(total) : std::nullopt;
+}
+
+uint64_t PassTimings::samplesAdded(std::string_view pass) const {
+    auto it = added_.find(pass);
+    return it == added_.end() ? 0u : it->second;
 }
 
 uint32_t PassTimings::sampleCount(std::string_view pass) const {

@@ -23,13 +23,14 @@ public:
     // Sum of the newest sample of every pass whose name starts with `prefix` (e.g. "caustics."): one
     // frame's cost of a pass family; none when no such pass was timed.
     std::optional<double> latestTotalMs(std::string_view prefix) const;
-    // Samples ever added (never capped by the window): tells a new measurement from an old one.
-    uint64_t samplesAdded() const { return added_; }
+    // Samples of `pass` ever added (never capped by the window): which execution of the pass the newest
+    // sample measures (the count minus one).
+    uint64_t samplesAdded(std::string_view pass) const;
     void clear() { samples_.clear(); }
 
 private:
     uint32_t window_;
-    uint64_t added_ = 0;
+    std::map<std::string, uint64_t, std::less<>> added_;
     std::map<std::string, std::deque<double>, std::less<>> samples_;
 };
 
