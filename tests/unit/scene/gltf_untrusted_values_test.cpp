@@ -11,6 +11,7 @@
 
 #include "gltf_test_files.h"
 #include "caustics/rhi/log.h"
+#include "caustics/scene/builtin_scenes.h"
 #include "caustics/scene/gltf.h"
 
 namespace caustics::scene {
@@ -92,6 +93,20 @@ TEST_F(GltfValues, EmissionIsLimitedToTheLightLimit) {
     ASSERT_TRUE(scene.ok()) << scene.message();
     EXPECT_EQ(scene->materials[0].emissive, glm::vec3(1e6f));
     EXPECT_TRUE(warned("material 0: KHR_materials_emissive_strength.emissiveStrength 1e+30 is outside [0, 1e+06]")) << allWarnings();
+}
+
+// The exporter keeps emissiveFactor in [0, 1] and writes the rest as KHR_materials_emissive_strength,
+// so the importer's clamp never loses what the engine itself wrote.
+TEST_F(GltfValues, EmissionAboveOneSurvivesTheRoundTripWithoutAWarning) {
+    Scene s = makeGlassSphereScene({.tessellation = 4});
+    s.materials[0].emissive = {5.0f, 2.5f, 0.0f};
+    auto path = (dir / "emissive.gltf").string();
+    ASSERT_TRUE(writeGltf(s, path).ok());
+    auto loaded = loadGltf(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.message();
+    EXPECT_NEAR(loaded->materials[0].emissive.r, 5.0f, 1e-5f);
+    EXPECT_NEAR(loaded->materials[0].emissive.g, 2.5f, 1e-5f);
+    EXPECT_FALSE(warned("emissive")) << allWarnings();
 }
 
 TEST_F(GltfValues, PrimitiveOfZeroAreaTrianglesIsSkippedAndAFileOfOnlyThoseRefused) {
