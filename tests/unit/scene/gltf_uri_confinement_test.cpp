@@ -95,6 +95,13 @@ TEST_F(GltfUris, AbsolutePathOutsideTheRootIsRefusedAndNeverOpened) {
     EXPECT_FALSE(openedDuring(fifo, [&] { expectRefused(a, {"resolves to '" + fs::canonical(fifo).string() + "', outside the asset root"}); }));
 }
 
+TEST_F(GltfUris, AbsolutePathInsideTheRootIsRefusedWithItsRelativeForm) {
+    TriangleAsset a = makeTriangleAsset();
+    writeBytes(model / "tri.bin", a.bin);
+    a.gltf["buffers"][0]["uri"] = (fs::canonical(model) / "tri.bin").string();
+    expectRefused(a, {"is an absolute path; glTF 2.0 (3.3) URIs are relative to the glTF file: write it as 'tri.bin'"});
+}
+
 TEST_F(GltfUris, EtcPasswdAndDevZeroAreRefusedNotFileNotFound) {
     for (const char* uri : {"/etc/passwd", "/dev/zero", "../../../../../../../../etc/passwd"}) {
         TriangleAsset a = makeTriangleAsset();
