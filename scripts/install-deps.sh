@@ -2,11 +2,12 @@
 # Installs every build and test dependency from Debian packages (see DESIGN.md "Dependencies").
 # Idempotent; works as root or through sudo. Mesa's lavapipe (with ray tracing) comes from
 # bookworm-backports, added with the URI of this machine's own Debian source: no mirror is hard-coded.
+# clang + libclang-rt-14-dev: libFuzzer for scripts/fuzz-check.sh (docs/viewer.md, "Fuzzing").
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
-stamp=/var/lib/caustics-deps.v3   # bump when the package list changes
+stamp=/var/lib/caustics-deps.v4   # bump when the package list changes
 if [ -f "$stamp" ] && [ -z "${CAUSTICS_FORCE_DEPS:-}" ]; then exit 0; fi
 
 debian_uri() {
@@ -36,6 +37,7 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libvulkan-dev vulkan-validationlayers glslang-tools spirv-tools vulkan-tools \
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libglfw3-dev libopenimageio-dev openimageio-tools \
   libgtest-dev libgmock-dev directx-headers-dev xvfb xauth \
-  ccache libimgui-dev g++-mingw-w64-x86-64-posix python3-matplotlib
+  ccache libimgui-dev g++-mingw-w64-x86-64-posix python3-matplotlib \
+  clang libclang-rt-14-dev
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
 $SUDO touch "$stamp"

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
+#include <vector>
 
 #include "bench_modes.h"
 #include "caustics/caustics_settings.h"
+#include "caustics/scene/builtin_scenes.h"
 
 namespace caustics::bench {
 namespace {
@@ -26,12 +28,12 @@ Result<uint32_t> parseCount(std::string_view flag, std::string_view text, uint32
 Result<float> parsePositive(std::string_view flag, std::string_view text, float hi) {
     std::string s(text);
     char* end = nullptr;
-    float value = std::strtof(s.c_str(), &end);
+    double value = std::strtod(s.c_str(), &end);   // double: 1e39 is "outside", not "not a number"
     if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(value))
         return makeError(std::string(flag) + ": expected a number, got '" + s + "'");
-    if (!(value > 0.0f) || value > hi)
+    if (!(value > 0.0) || value > double(hi))
         return makeError(std::string(flag) + ": " + s + " is outside (0, " + std::to_string(int(hi)) + "]");
-    return value;
+    return float(value);
 }
 
 Status setOption(BenchOptions& o, std::string_view flag, std::string_view value) {
@@ -51,7 +53,20 @@ Status setOption(BenchOptions& o, std::string_view flag, std::string_view value)
         CAUSTICS_TRY(o.triangles, parseCount(flag, value, 12, kMaxBenchTriangles));
     } else if (flag == "--scene" || flag == "--scenes") {
         if (value.empty()) return makeError(std::string(flag) + ": empty scene list");
-        o.scenes = std::string(value);
+        // Every name checked before anything runs: a bad second name must not cost a benchmark of the first.
+        const std::vector<std::string> known = scene::builtinSceneNames();
+        const std::string list(value);
+        for (size_t start = 0; start <= list.size();) {
+            size_t end = std::min(list.find(',', start), list.size());
+            const std::string item = list.substr(start, end - start);
+            if (std::find(known.begin(), known.end(), item) == known.end()) {
+                std::string names;
+                for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
+                return makeError(std::string(flag) + ": '" + item + "' is not a built-in scene (known: " + names + ")");
+            }
+            start = end + 1;
+        }
+        o.scenes = list;
     } else if (flag == "--extra-lights") {
         CAUSTICS_TRY(o.extraLights, parseCount(flag, value, 0, kMaxBenchExtraLights));
     } else if (flag == "--rays-per-texel") {

@@ -62,11 +62,13 @@ Status checkAnimatedLights(const AnimationToggles& toggles, size_t lightCount, c
 }
 
 std::string framePath(const std::string& pattern, uint32_t frame) {
-    size_t at = pattern.find(kFrameToken);
-    if (at == std::string::npos) return pattern;
     char number[16];
     std::snprintf(number, sizeof(number), "%04u", frame);
-    return pattern.substr(0, at) + number + pattern.substr(at + std::char_traits<char>::length(kFrameToken));
+    const size_t token = std::char_traits<char>::length(kFrameToken);
+    std::string path = pattern;
+    for (size_t at = path.find(kFrameToken); at != std::string::npos; at = path.find(kFrameToken, at))
+        path.replace(at, token, number);   // every {frame}: the name written is the name reported
+    return path;
 }
 
 const char* animationUsage() {

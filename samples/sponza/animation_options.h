@@ -30,7 +30,7 @@ Status finishAnimationOptions(AnimationOptions& options, bool window, bool frame
 // After the scene is loaded: every orbiting light exists (the error names the index and the count).
 Status checkAnimatedLights(const AnimationToggles& toggles, size_t lightCount, const std::string& where);
 
-// `pattern` with kFrameToken replaced by the zero-padded frame number (unchanged without the token).
+// `pattern` with every kFrameToken replaced by the zero-padded frame number (unchanged without the token).
 std::string framePath(const std::string& pattern, uint32_t frame);
 
 const char* animationUsage();

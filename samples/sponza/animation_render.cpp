@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "finite_output.h"
 #include "image_file.h"
 #include "scene_animation.h"
 
@@ -23,7 +24,7 @@ Result<FrameImages> renderAnimation(FrameRenderer& renderer, scene::Scene& scene
         if (everyFrame) {
             const FrameImages& img = renderer.images();
             std::string path = framePath(o.outPath, f);
-            CAUSTICS_CHECK(writeRenderedImage(path, img.width, img.height, img.display, img.hdr));
+            CAUSTICS_CHECK(writeFiniteRenderedImage(path, img.width, img.height, img.display, img.hdr));
         }
         if (!last) animation.advance(kFixedFrameSeconds);
     }
@@ -33,7 +34,9 @@ Result<FrameImages> renderAnimation(FrameRenderer& renderer, scene::Scene& scene
                 frames, double(animation.objectSeconds()), double(animation.toggles.speed), animation.glassCount(),
                 double(pose.offset.x), double(pose.offset.y), double(pose.offset.z), double(glm::degrees(pose.yawRadians)),
                 double(360.0f * animation.lightSeconds() / kAnimationPeriodSeconds));
-    if (everyFrame) std::printf("wrote %s for frames 0..%u\n", o.outPath.c_str(), frames - 1);
+    if (everyFrame)   // the names written, not the pattern
+        std::printf("wrote %s .. %s (frames 0..%u)\n", framePath(o.outPath, 0).c_str(), framePath(o.outPath, frames - 1).c_str(),
+                    frames - 1);
     return renderer.images();
 }
 

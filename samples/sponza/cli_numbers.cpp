@@ -19,17 +19,36 @@ Result<uint32_t> parseWholeNumber(const std::string& option, const std::string& 
     return value;
 }
 
-Result<float> parsePositiveNumber(const std::string& option, const std::string& text, float hi) {
+namespace {
+
+// Parsed in double, so a well-formed number past the float range (1e39) is "outside" the option's range
+// rather than "not a number"; inf and nan are not numbers here.
+Result<double> parseReal(const std::string& option, const std::string& text) {
     char* end = nullptr;
-    float value = std::strtof(text.c_str(), &end);
+    double value = std::strtod(text.c_str(), &end);
     if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
         return makeError(option + ": '" + text + "' is not a number");
-    if (value <= 0.0f || value > hi) {
-        std::ostringstream s;
-        s << option << ": " << text << " is outside (0, " << hi << "]";
-        return makeError(s.str());
-    }
     return value;
+}
+
+std::string rangeText(char open, float lo, float hi) {
+    std::ostringstream s;
+    s << open << lo << ", " << hi << "]";
+    return s.str();
+}
+
+}  // namespace
+
+Result<float> parseNumberIn(const std::string& option, const std::string& text, float lo, float hi) {
+    CAUSTICS_TRY(double value, parseReal(option, text));
+    if (value < double(lo) || value > double(hi)) return makeError(option + ": " + text + " is outside " + rangeText('[', lo, hi));
+    return float(value);
+}
+
+Result<float> parsePositiveNumber(const std::string& option, const std::string& text, float hi) {
+    CAUSTICS_TRY(double value, parseReal(option, text));
+    if (value <= 0.0 || value > double(hi)) return makeError(option + ": " + text + " is outside " + rangeText('(', 0.0f, hi));
+    return float(value);
 }
 
 }  // namespace caustics::sample

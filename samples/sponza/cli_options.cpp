@@ -1,6 +1,7 @@
 #include "cli_options.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <initializer_list>
 #include <sstream>
 
@@ -21,16 +22,7 @@ Result<uint32_t> parseUint(const std::string& option, const std::string& text, u
 }
 
 Result<float> parseFloat(const std::string& option, const std::string& text, float lo, float hi) {
-    char* end = nullptr;
-    float value = std::strtof(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
-        return makeError(option + ": '" + text + "' is not a number");
-    if (value < lo || value > hi) {
-        std::ostringstream s;
-        s << option << ": " << text << " is outside [" << lo << ", " << hi << "]";
-        return makeError(s.str());
-    }
-    return value;
+    return parseNumberIn(option, text, lo, hi);
 }
 
 // "ex,ey,ez,tx,ty,tz,fov[,ux,uy,uz]" (fov in degrees; the optional up vector must not be parallel to
@@ -87,6 +79,8 @@ const char* aovName(Aov aov) {
 const char* cliUsage() {
     static const std::string usage = std::string("usage: caustics-sponza [options]\n"
            "  --scene PATH|builtin|builtin:atrium   scene to render (glTF .gltf/.glb or a built-in one)\n"
+           "  --asset-root DIR        folder the glTF's buffer and image URIs must stay inside (default:\n"
+           "                          the model's folder; widen it for textures in a sibling folder)\n"
            "  --sponza PATH           modified Sponza: load PATH and add the caustic objects to its atrium\n"
            "  --backend vulkan|d3d12  RHI backend (default vulkan)\n"
            "  --width N --height N    image size (default 512x384)\n"
@@ -97,7 +91,7 @@ const char* cliUsage() {
            "  --frames N              frames to render (temporal filter accumulates); with --window, close after N\n"
            "  --graph-dot FILE        write the render graph as Graphviz dot\n"
            "  --map-resolution N      caustic visibility map size (default 512)\n"
-           "  --rays-per-texel X      rays per map texel, fractional allowed (default 1)\n"
+           "  --rays-per-texel X      rays per map texel in (0, 256], fractional allowed (default 1)\n"
            "  --max-depth N           max specular events per caustic path (default 4)\n"
            "  --max-stored-hits N     forward hits kept for the second type (default 1048576)\n"
            "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
@@ -126,7 +120,7 @@ bool takesValue(const std::string& a) {
     auto animation = parseAnimationOption(a, "", animationProbe);
     if (!animation || *animation) return true;
     static const char* const kValueOptions[] = {
-        "--scene", "--sponza", "--backend", "--out", "--graph-dot", "--aov", "--camera", "--width", "--height",
+        "--scene", "--asset-root", "--sponza", "--backend", "--out", "--graph-dot", "--aov", "--camera", "--width", "--height",
         "--frames", "--map-resolution", "--max-stored-hits", "--max-depth", "--rays-per-texel", "--exposure",
         "--reference-photons", "--script"};
     for (const char* known : kValueOptions)
@@ -170,6 +164,10 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
         if (a == "--validation") { o.validation = true; continue; }
         CLI_VALUE(value);
         if (a == "--scene") o.scene = value;
+        else if (a == "--asset-root") {
+            if (value.empty()) return makeError("--asset-root: the path is empty");
+            o.assetRoot = value;
+        }
         else if (a == "--sponza") o.sponzaPath = value;
         else if (a == "--backend") {
             if (value != "vulkan" && value != "d3d12") return makeError("--backend: '" + value + "' is not vulkan or d3d12");
@@ -189,8 +187,11 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
         else if (a == "--max-stored-hits") { CAUSTICS_TRY(o.maxStoredHits, parseUint(a, value, 1, 1u << 26)); }
         else if (a == "--max-depth") { CAUSTICS_TRY(o.maxDepth, parseUint(a, value, 1, kMaxSpecularDepth)); }
         else if (a == "--rays-per-texel") {
-            CAUSTICS_TRY(o.raysPerTexel, parseFloat(a, value, 0.0f, kMaxRaysPerTexel));
-            if (o.raysPerTexel <= 0.0f) return makeError("--rays-per-texel: must be greater than 0 (got " + value + ")");
+            // The range shown is the one applied: 0 is refused, so it is open at 0.
+            auto rays = parsePositiveNumber(a, value, kMaxRaysPerTexel);   // "X is outside (0, 256]"
+            if (!rays && std::strtod(value.c_str(), nullptr) <= 0.0 && rays.message().find("outside") != std::string::npos)
+                return makeError("--rays-per-texel: must be greater than 0 (got " + value + "); the range is (0, 256]");
+            CAUSTICS_TRY(o.raysPerTexel, std::move(rays));
         } else if (a == "--exposure") { CAUSTICS_TRY(o.exposure, parseFloat(a, value, 1e-6f, 1e6f)); }
         else if (a == "--reference-photons") { CAUSTICS_TRY(o.referencePhotons, parseUint(a, value, 1, 1'000'000'000u)); }
         else {

@@ -24,6 +24,7 @@ struct CameraOverride {
 
 struct CliOptions {
     std::string scene = "builtin";        // glTF path, "builtin", "builtin:table" or "builtin:atrium"
+    std::string assetRoot;                // --asset-root: scene::LoadOptions::assetRoot (empty: the model's folder)
     std::string sponzaPath;               // modified Sponza: a glTF to which the caustic objects are added
     std::string backend = "vulkan";
     uint32_t width = 512;

@@ -11,6 +11,7 @@
 #include "caustics/caustics_module.h"
 #include "cli_options.h"
 #include "frame_budget.h"
+#include "finite_output.h"
 #include "frame_renderer.h"
 #include "image_file.h"
 #include "caustics/reference/reference_tracer.h"
@@ -204,7 +205,7 @@ int run(const sample::CliOptions& o) {
     }
     if (!o.outPath.empty() && o.outPath.find(sample::kFrameToken) == std::string::npos) {
         const sample::FrameImages& img = *still;
-        if (Status st = sample::writeRenderedImage(o.outPath, img.width, img.height, img.display, img.hdr); !st) {
+        if (Status st = sample::writeFiniteRenderedImage(o.outPath, img.width, img.height, img.display, img.hdr); !st) {
             std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
             return 1;
         }

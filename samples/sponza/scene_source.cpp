@@ -6,9 +6,11 @@
 namespace caustics::sample {
 
 Result<scene::Scene> loadSceneFromOptions(const CliOptions& o) {
-    if (!o.sponzaPath.empty()) return scene::loadModifiedSponza(o.sponzaPath);
+    scene::LoadOptions options;
+    options.assetRoot = o.assetRoot;
+    if (!o.sponzaPath.empty()) return scene::loadModifiedSponza(o.sponzaPath, options);
     if (o.scene == "builtin" || o.scene.rfind("builtin:", 0) == 0) return scene::makeBuiltin(o.scene);
-    return scene::loadGltf(o.scene);
+    return scene::loadGltf(o.scene, options);
 }
 
 }  // namespace caustics::sample

@@ -9,6 +9,7 @@
 #include <backends/imgui_impl_opengl2.h>
 
 #include "frame_budget.h"
+#include "finite_output.h"
 #include "image_file.h"
 #include "viewer_context.h"
 #include "viewer_ui.h"
@@ -190,7 +191,7 @@ int loop(ViewerContext& v, const Script& script) {
                 "went to it live\n", v.moduleBuilds, v.liveLightEdits, v.liveSettingsChanges);
     if (!o.outPath.empty()) {
         const FrameImages& img = v.renderer->images();
-        if (Status st = writeRenderedImage(o.outPath, img.width, img.height, img.display, img.hdr); !st) {
+        if (Status st = writeFiniteRenderedImage(o.outPath, img.width, img.height, img.display, img.hdr); !st) {
             std::fprintf(stderr, "caustics-sponza: %s\n", st.message().c_str());
             return 1;
         }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -29,6 +30,17 @@ Result<Script> parseScript(const std::string& text, const std::string& fileName)
     std::istringstream lines(text);
     std::string line;
     for (uint32_t number = 1; std::getline(lines, line); ++number) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();   // CRLF files
+        // A control byte (a NUL above all) would cut every message that quotes the line: name it instead.
+        for (size_t col = 0; col < line.size(); ++col) {
+            unsigned char ch = static_cast<unsigned char>(line[col]);
+            if ((ch < 0x20 && ch != '\t') || ch == 0x7f) {
+                char code[8];
+                std::snprintf(code, sizeof(code), "0x%02x", unsigned(ch));
+                return makeError(fileName + ":" + std::to_string(number) + ": control byte " + code + (ch == 0 ? " (NUL)" : "") +
+                                 " at column " + std::to_string(col + 1) + "; a script is plain text");
+            }
+        }
         if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
         std::istringstream words(line);
         std::vector<std::string> w;

@@ -92,8 +92,8 @@ Scene makeBuiltinScene(const std::string& name) {
     return makeTableScene();
 }
 
-Result<Scene> loadModifiedSponza(const std::string& gltfPath) {
-    CAUSTICS_TRY(Scene scene, loadGltf(gltfPath));
+Result<Scene> loadModifiedSponza(const std::string& gltfPath, const LoadOptions& options) {
+    CAUSTICS_TRY(Scene scene, loadGltf(gltfPath, options));
     Aabb box = sceneBounds(scene);
     if (box.empty()) return makeError(gltfPath + ": the scene has no geometry to place the caustic objects in");
     glm::vec3 e = box.extent(), c = box.center();

@@ -68,9 +68,14 @@ tinygltf::Material toGltf(const Material& m) {
     g.pbrMetallicRoughness.metallicFactor = m.metallic;
     g.pbrMetallicRoughness.roughnessFactor = m.roughness;
     g.pbrMetallicRoughness.baseColorTexture.index = m.baseColorTexture;
-    g.emissiveFactor = {m.emissive.r, m.emissive.g, m.emissive.b};
     g.doubleSided = m.doubleSided;
     using Obj = tinygltf::Value::Object;
+    // emissiveFactor is limited to [0, 1] (the importer clamps it); brighter emission goes through
+    // KHR_materials_emissive_strength so that it survives the round trip.
+    float strength = std::max({m.emissive.r, m.emissive.g, m.emissive.b});
+    glm::vec3 factor = strength > 1.0f ? m.emissive / strength : m.emissive;
+    g.emissiveFactor = {factor.r, factor.g, factor.b};
+    if (strength > 1.0f) g.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(Obj{{"emissiveStrength", number(strength)}});
     if (m.transmission > 0.0f) g.extensions["KHR_materials_transmission"] = tinygltf::Value(Obj{{"transmissionFactor", number(m.transmission)}});
     g.extensions["KHR_materials_ior"] = tinygltf::Value(Obj{{"ior", number(m.ior)}});
     if (m.thickness > 0.0f || m.attenuationDistance > 0.0f) {
@@ -178,7 +183,8 @@ Status writeGltf(const Scene& scene, const std::string& path) {
             root.nodes.push_back(int(model.nodes.size() - 1));
         }
         if (!model.lights.empty()) model.extensionsUsed.push_back("KHR_lights_punctual");
-        for (const char* ext : {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume", "KHR_materials_specular"})
+        for (const char* ext : {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume", "KHR_materials_specular",
+                                "KHR_materials_emissive_strength"})
             if (std::any_of(model.materials.begin(), model.materials.end(), [&](const tinygltf::Material& m) { return m.extensions.count(ext) > 0; }))
                 model.extensionsUsed.push_back(ext);
         for (const Camera& c : scene.cameras) {

@@ -92,20 +92,72 @@ double maxAxisScale(const glm::mat4& m) {
 // Beyond this a mesh of metre-sized features spans more than 1000 km: ray-triangle tests in float
 // lose all precision (the ray epsilon alone exceeds the objects in view), so the instance would vanish.
 constexpr double kMaxInstanceScale = 1e6;
+// The same limit on where geometry lies: a vertex 1e9 m out leaves a float ray no precision anywhere
+// near it, and the camera's far plane (fitted to the bounds) no depth precision (a black image).
+constexpr double kMaxCoordinate = 1e6;
 
-Result<glm::mat4> localTransform(const tinygltf::Node& node, size_t index) {
+// Largest |p| over the mesh's vertices, in double.
+double meshRadius(const Mesh& mesh) {
+    double r = 0.0;
+    for (const glm::vec3& p : mesh.positions) r = std::max(r, std::sqrt(double(p.x) * p.x + double(p.y) * p.y + double(p.z) * p.z));
+    return r;
+}
+
+// Triangles whose area is zero (in double: float cross products of large coordinates round to zero).
+size_t zeroAreaTriangles(const Mesh& mesh) {
+    size_t zero = 0;
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        glm::dvec3 a(mesh.positions[mesh.indices[t]]), b(mesh.positions[mesh.indices[t + 1]]), c(mesh.positions[mesh.indices[t + 2]]);
+        if (!(glm::length(glm::cross(b - a, c - a)) > 0.0)) ++zero;
+    }
+    return zero;
+}
+
+std::string numbers(const double* v, size_t n) {
+    std::string out = "(";
+    for (size_t i = 0; i < n; ++i) {
+        char text[32];
+        std::snprintf(text, sizeof(text), "%s%.6g", i ? ", " : "", v[i]);
+        out += text;
+    }
+    return out + ")";
+}
+
+// glTF 2.0 5.25: `matrix` must be decomposable to TRS, so its bottom row is (0, 0, 0, 1); `rotation` is a
+// unit quaternion. A projective matrix is refused (the renderer's instances are affine 3x4: it would
+// silently drop the row); a quaternion that is not unit is normalised, a zero one ignored, with a warning.
+Result<glm::mat4> localTransform(const tinygltf::Node& node, size_t index, std::vector<std::string>& warnings) {
     glm::mat4 m(1.0f);
-    std::string name = "node " + std::to_string(index);
+    std::string name = nodeLabel(node, index);
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) return makeError(name + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers, expected 16");
         for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(node.matrix[size_t(i)]);   // column-major, as glTF
+        const double bottom[4] = {node.matrix[3], node.matrix[7], node.matrix[11], node.matrix[15]};
+        if (std::fabs(bottom[0]) > 1e-6 || std::fabs(bottom[1]) > 1e-6 || std::fabs(bottom[2]) > 1e-6 ||
+            std::fabs(bottom[3] - 1.0) > 1e-6)
+            return makeError(name + " has a matrix whose bottom row is " + numbers(bottom, 4) +
+                             ", not (0, 0, 0, 1): glTF 2.0 node matrices must be affine (decomposable to TRS)");
     } else {
         glm::vec3 t(0.0f), s(1.0f);
         glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
         if (node.translation.size() == 3) t = {float(node.translation[0]), float(node.translation[1]), float(node.translation[2])};
         if (node.scale.size() == 3) s = {float(node.scale[0]), float(node.scale[1]), float(node.scale[2])};
-        if (node.rotation.size() == 4)   // glTF stores (x, y, z, w)
-            r = glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]));
+        if (node.rotation.size() == 4) {   // glTF stores (x, y, z, w)
+            const double* q = node.rotation.data();
+            double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+            if (!(length > 1e-12) || !std::isfinite(length)) {
+                warnings.push_back(name + " has rotation " + numbers(q, 4) +
+                                   ", not a unit quaternion (glTF 2.0 5.25); using no rotation");
+            } else {
+                if (std::fabs(length - 1.0) > 1e-3) {
+                    char text[32];
+                    std::snprintf(text, sizeof(text), "%.6g", length);
+                    warnings.push_back(name + " has rotation " + numbers(q, 4) + " of length " + text +
+                                       ", not a unit quaternion (glTF 2.0 5.25); normalised");
+                }
+                r = glm::quat(float(q[3] / length), float(q[0] / length), float(q[1] / length), float(q[2] / length));
+            }
+        }
         m = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
     }
     for (int i = 0; i < 16; ++i)
@@ -131,6 +183,9 @@ private:
     uint64_t triangles_ = 0, vertices_ = 0;
     int defaultMaterial_ = -1;
     uint32_t skippedInstances_ = 0;
+    std::string firstSkip_;   // why the first instance was skipped
+    uint32_t degeneratePrimitives_ = 0;
+    std::vector<double> meshRadius_;   // scene mesh -> largest |local vertex|
 };
 
 Status Importer::run(Scene& scene) {
@@ -158,8 +213,8 @@ Status Importer::run(Scene& scene) {
     std::vector<int> textureToImage;
     for (const tinygltf::Texture& t : model_.textures)
         textureToImage.push_back(t.source >= 0 && size_t(t.source) < model_.images.size() ? t.source : -1);
-    for (const tinygltf::Material& mat : model_.materials)
-        scene.materials.push_back(convertMaterial(mat, textureToImage, warnings));
+    for (size_t i = 0; i < model_.materials.size(); ++i)
+        scene.materials.push_back(convertMaterial(model_.materials[i], i, textureToImage, options_.maxLightIntensity, warnings));
 
     CAUSTICS_CHECK(convertMeshes(scene));
     CAUSTICS_CHECK(convertNodes(scene));
@@ -189,15 +244,26 @@ Status Importer::convertMeshes(Scene& scene) {
                 continue;
             }
             CAUSTICS_TRY(Mesh mesh, convertPrimitive(prim, m, p));
+            size_t triangles = mesh.indices.size() / 3;
+            if (triangles > 0 && zeroAreaTriangles(mesh) == triangles) {
+                warnings.push_back("mesh " + std::to_string(m) + " primitive " + std::to_string(p) + ": all " +
+                                   std::to_string(triangles) + " triangles have zero area (nothing to render); skipped");
+                ++degeneratePrimitives_;
+                continue;
+            }
             if (prim.material >= 0 && size_t(prim.material) >= model_.materials.size())
                 return makeError("mesh " + std::to_string(m) + " primitive " + std::to_string(p) + " refers to material " +
                                  std::to_string(prim.material) + ", but the file has " +
                                  std::to_string(model_.materials.size()) + " materials");
             mesh.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial(scene);
             meshPrimitives_[m].push_back(uint32_t(scene.meshes.size()));
+            meshRadius_.push_back(meshRadius(mesh));
             scene.meshes.push_back(std::move(mesh));
         }
     }
+    if (scene.meshes.empty() && degeneratePrimitives_ > 0)
+        return makeError("has no triangle of non-zero area (" + std::to_string(degeneratePrimitives_) +
+                         " primitives, every triangle degenerate): the image would be empty");
     if (scene.meshes.empty()) return makeError("contains no triangle primitives");
     return okStatus();
 }
@@ -323,7 +389,7 @@ Status Importer::convertNodes(Scene& scene) {
         if (visited[size_t(index)]) return makeError("node " + std::to_string(index) + " appears twice in the node hierarchy (a cycle or a shared child)");
         visited[size_t(index)] = true;
         const tinygltf::Node& node = model_.nodes[size_t(index)];
-        CAUSTICS_TRY(glm::mat4 local, localTransform(node, size_t(index)));
+        CAUSTICS_TRY(glm::mat4 local, localTransform(node, size_t(index), warnings));
         glm::mat4 world = parent * local;
         for (int i = 0; i < 16; ++i)
             if (!std::isfinite(glm::value_ptr(world)[i]))
@@ -335,13 +401,26 @@ Status Importer::convertNodes(Scene& scene) {
             std::snprintf(scale, sizeof(scale), "%.3g", maxAxisScale(world));
             warnings.push_back(nodeLabel(node, size_t(index)) + " scales its mesh by " + scale + " (more than " +
                                "1e6): float ray tracing cannot represent it; the instance is skipped");
-            ++skippedInstances_;
+            if (skippedInstances_++ == 0) firstSkip_ = warnings.back();
         }
         if (node.mesh >= 0 && !hugeScale) {
             if (size_t(node.mesh) >= model_.meshes.size())
                 return makeError("node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
                                  std::to_string(model_.meshes.size()) + " meshes");
+            double radius = 0.0;
+            for (uint32_t sm : meshPrimitives_[size_t(node.mesh)]) radius = std::max(radius, meshRadius_[sm]);
+            glm::dvec3 origin(world[3]);
+            double reach = glm::length(origin) + maxAxisScale(world) * radius;
+            const bool farOut = reach > kMaxCoordinate;
+            if (farOut) {
+                char text[32];
+                std::snprintf(text, sizeof(text), "%.3g", reach);
+                warnings.push_back(nodeLabel(node, size_t(index)) + " places its mesh up to " + text + " m from the origin " +
+                                   "(more than 1e6 m): float ray tracing cannot represent it; the instance is skipped");
+                if (skippedInstances_++ == 0) firstSkip_ = warnings.back();
+            }
             for (uint32_t sm : meshPrimitives_[size_t(node.mesh)]) {
+                if (farOut) break;
                 if (scene.instances.size() >= options_.maxInstances)
                     return makeError("has more than " + std::to_string(options_.maxInstances) + " instances, the limit LoadOptions::maxInstances");
                 scene.instances.push_back({sm, world, uint32_t(scene.instances.size() + 1)});
@@ -366,14 +445,23 @@ Status Importer::convertNodes(Scene& scene) {
             std::string problem, repaired;
             std::string label = "light " + std::to_string(light) +
                                 (model_.lights[size_t(light)].name.empty() ? "" : " ('" + shortened(model_.lights[size_t(light)].name, 64) + "')");
-            if (convertLight(model_.lights[size_t(light)], world, out, problem, repaired)) scene.lights.push_back(out);
+            // Refused, not skipped: a skipped light leaves a file "without lights" that has one.
+            double intensity = model_.lights[size_t(light)].intensity;
+            if (!(intensity >= 0.0) || !std::isfinite(intensity)) {
+                char text[32];
+                std::snprintf(text, sizeof(text), "%.6g", intensity);
+                return makeError(label + " has intensity " + text + "; KHR_lights_punctual requires a finite intensity >= 0");
+            }
+            if (convertLight(model_.lights[size_t(light)], world, options_.maxLightIntensity, out, problem, repaired))
+                scene.lights.push_back(out);
             else warnings.push_back(label + " " + problem + "; skipped");
             if (!repaired.empty()) warnings.push_back(label + ": " + repaired);
         }
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
     }
     if (scene.instances.empty() && skippedInstances_ > 0)
-        return makeError("every mesh instance was skipped (" + std::to_string(skippedInstances_) + "; see the warnings)");
+        return makeError("every mesh instance was skipped (" + std::to_string(skippedInstances_) + "), the image would be empty: " +
+                         firstSkip_);
     if (scene.instances.empty()) {
         // Meshes no scene uses: show each once at the origin rather than render nothing.
         warnings.push_back("no node instantiates a mesh; every mesh is placed once at the origin");
@@ -384,8 +472,11 @@ Status Importer::convertNodes(Scene& scene) {
 
 Result<std::vector<unsigned char>> readFile(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return makeError("file not found");
-    if (std::filesystem::is_directory(path, ec)) return makeError("is a directory, not a glTF file");
+    std::filesystem::file_status status = std::filesystem::status(path, ec);   // stat: a FIFO is not opened
+    if (!std::filesystem::exists(status)) return makeError("file not found");
+    if (std::filesystem::is_directory(status)) return makeError("is a directory, not a glTF file");
+    if (!std::filesystem::is_regular_file(status))
+        return makeError("is not a regular file (a device, FIFO or socket); only regular files are read");
     std::ifstream in(path, std::ios::binary);
     if (!in) return makeError("cannot open the file for reading");
     std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -416,39 +507,42 @@ bool jsonTooDeep(const unsigned char* p, size_t n) {
     return false;
 }
 
-Result<Scene> loadUnguarded(const std::string& path, const LoadOptions& options) {
-    CAUSTICS_TRY(std::vector<unsigned char> bytes, readFile(path));
-    std::filesystem::path fsPath(path);
+// `name`: the file path or the memory load's name; `modelDir`: the file's folder ("" from memory).
+Result<Scene> loadBytes(const std::vector<unsigned char>& bytes, const std::string& name, const std::string& modelDir,
+                        const LoadOptions& options) {
+    if (bytes.empty()) return makeError("the file is empty");
+    std::filesystem::path fsPath(name);
     std::string ext = fsPath.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    bool binary = ext == ".glb" || (ext != ".gltf" && bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0);
-    if (binary && (bytes.size() < 4 || std::memcmp(bytes.data(), "glTF", 4) != 0))
-        return makeError("is not a binary glTF file (no 'glTF' magic at the start)");
+    // The "glTF" magic decides, whatever the extension says (a GLB named .gltf is common).
+    bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    if (ext == ".glb" && !binary) return makeError("is not a binary glTF file (no 'glTF' magic at the start)");
     if (bytes.size() > 0xFFFFFFFFull) return makeError("is larger than 4 GiB");
+    CAUSTICS_TRY(AssetRoot assets, makeAssetRoot(modelDir, options.assetRoot));
     size_t jsonBegin = binary ? 20 : 0, jsonLength = bytes.size();
-    if (binary && bytes.size() >= 20) {   // GLB: 12-byte header, then the JSON chunk's length and type
+    if (binary) {
+        CAUSTICS_CHECK(preflightGlb(bytes));   // the chunk lengths below are then within the file
         uint32_t chunk = 0;
         std::memcpy(&chunk, bytes.data() + 12, 4);
-        jsonLength = std::min<size_t>(chunk, bytes.size() - 20);
+        jsonLength = chunk;
     }
-    if (binary) CAUSTICS_CHECK(preflightGlb(bytes));
-    if (jsonBegin <= bytes.size()) {
-        size_t available = std::min(jsonLength, bytes.size() - jsonBegin);
-        if (jsonTooDeep(bytes.data() + jsonBegin, available))
-            return makeError("invalid JSON: nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-        CAUSTICS_CHECK(preflightJson(bytes.data() + jsonBegin, available));
-    }
+    std::vector<std::string> preflightWarnings;
+    if (jsonTooDeep(bytes.data() + jsonBegin, jsonLength))
+        return makeError("invalid JSON: nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    CAUSTICS_CHECK(preflightJson(bytes.data() + jsonBegin, jsonLength, assets, preflightWarnings));
+    for (const std::string& w : preflightWarnings) log(LogLevel::Warning, name + ": " + w);
 
     tinygltf::TinyGLTF loader;
     ImageContext imageContext{&options, {}};
     loader.SetImageLoader(decodeImage, &imageContext);
+    loader.SetFsCallbacks(confinedFileSystem(assets));
     tinygltf::Model model;
     std::string err, warn;
-    std::string baseDir = fsPath.parent_path().string();
+    std::string baseDir = assets.modelDir.string();
     bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
                      : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                                   unsigned(bytes.size()), baseDir);
-    logLines(path, shortenLongWords(warn));
+    logLines(name, shortenLongWords(warn));
     if (!imageContext.error.empty()) return makeError(imageContext.error);
     if (!ok) return makeError(err.empty() ? std::string("tinygltf could not parse the file") : shortenLongWords(trimmed(err)));
 
@@ -456,27 +550,42 @@ Result<Scene> loadUnguarded(const std::string& path, const LoadOptions& options)
     scene.name = fsPath.stem().string();
     Importer importer(model, options);
     Status status = importer.run(scene);
-    for (const std::string& w : importer.warnings) log(LogLevel::Warning, path + ": " + w);
+    for (const std::string& w : importer.warnings) log(LogLevel::Warning, name + ": " + w);
     if (!status) return status.error();
     return scene;
+}
+
+Result<Scene> loadUnguarded(const std::string& path, const LoadOptions& options) {
+    CAUSTICS_TRY(std::vector<unsigned char> bytes, readFile(path));
+    std::string folder = std::filesystem::path(path).parent_path().string();
+    return loadBytes(bytes, path, folder.empty() ? "." : folder, options);
+}
+
+// The loader boundary: tinygltf (through nlohmann json) and std::bad_alloc may throw; nothing
+// escapes, and every error starts with `name`.
+template <typename Load>
+Result<Scene> guarded(const std::string& name, Load&& load) {
+    try {
+        Result<Scene> result = load();
+        if (!result) return makeError(name + ": " + result.message());
+        return result;
+    } catch (const std::bad_alloc&) {
+        return makeError(name + ": out of memory while loading (the file declares sizes too large to load)");
+    } catch (const std::exception& e) {
+        return makeError(name + ": invalid glTF (" + std::string(e.what()) + ")");
+    } catch (...) {
+        return makeError(name + ": invalid glTF (unknown exception while parsing)");
+    }
 }
 
 }  // namespace
 
 Result<Scene> loadGltf(const std::string& path, const LoadOptions& options) {
-    // The loader boundary: tinygltf (through nlohmann json) and std::bad_alloc may throw; nothing
-    // escapes, and every error starts with the file path.
-    try {
-        Result<Scene> result = loadUnguarded(path, options);
-        if (!result) return makeError(path + ": " + result.message());
-        return result;
-    } catch (const std::bad_alloc&) {
-        return makeError(path + ": out of memory while loading (the file declares sizes too large to load)");
-    } catch (const std::exception& e) {
-        return makeError(path + ": invalid glTF (" + std::string(e.what()) + ")");
-    } catch (...) {
-        return makeError(path + ": invalid glTF (unknown exception while parsing)");
-    }
+    return guarded(path, [&] { return loadUnguarded(path, options); });
+}
+
+Result<Scene> loadGltfFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, const LoadOptions& options) {
+    return guarded(name, [&] { return loadBytes(bytes, name, "", options); });
 }
 
 }  // namespace caustics::scene

@@ -1,6 +1,7 @@
 #pragma once
 // Private to the scene library: tinygltf plus the checked accessor reader the importer uses.
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -44,10 +45,29 @@ uint32_t readIndex(const AccessorView& view, size_t i);
 const char* typeName(int tinygltfType);
 const char* componentTypeName(int componentType);
 
-// Checks on the raw file before tinygltf parses it (gltf_preflight.cpp): the GLB header version, and in
-// the JSON the asset version, extensionsRequired and buffer byteLengths, with errors naming the field.
+// Where external URIs may lead (gltf_uris.cpp, docs/viewer.md "Untrusted glTF"): relative URIs resolve
+// against modelDir, and the file must be a regular file inside root (both absolute and canonical).
+// An empty root (a glTF loaded from memory without LoadOptions::assetRoot) allows no external file.
+struct AssetRoot {
+    std::filesystem::path modelDir;
+    std::filesystem::path root;
+};
+// `modelDir`: the glTF file's folder ("" when loaded from memory); `assetRoot`: LoadOptions::assetRoot.
+Result<AssetRoot> makeAssetRoot(const std::string& modelDir, const std::string& assetRoot);
+// The external file `uri` (field "buffers[0].uri") names is a regular file inside the root; else an
+// error naming the field, the URI, where it resolves and the root. Opens nothing. `missingOk`: a file
+// that does not exist passes (images: tinygltf warns and the texture becomes white).
+Status checkUri(const AssetRoot& root, const std::string& field, const std::string& uri, bool missingOk);
+// File-system callbacks for tinygltf that apply checkUri's rule to every path tinygltf tries; `root`
+// must outlive the loader.
+tinygltf::FsCallbacks confinedFileSystem(const AssetRoot& root);
+
+// Checks on the raw file before tinygltf parses it (gltf_preflight.cpp): the GLB header and chunks, and in
+// the JSON the asset version, the array fields, extensionsRequired, buffer byteLengths, data URIs,
+// byteStrides and external URIs, with errors naming the field, its value and the limit; `warnings` gets
+// what is out of spec but usable (camera aspectRatio, zfar <= znear).
 Status preflightGlb(const std::vector<unsigned char>& bytes);
-Status preflightJson(const unsigned char* json, size_t size);
+Status preflightJson(const unsigned char* json, size_t size, const AssetRoot& root, std::vector<std::string>& warnings);
 bool isSupportedExtension(const std::string& name);
 // `text` cut to maxChars with its full length noted: user strings (names, URIs) in messages stay short.
 std::string shortened(const std::string& text, size_t maxChars);
@@ -68,12 +88,15 @@ namespace caustics::scene::gltf {
 
 // glTF material -> optical properties. `textureToImage` maps a glTF texture index to the image
 // (== Scene::textures) index, or -1. Warnings go to `warnings`.
-Material convertMaterial(const tinygltf::Material& material, const std::vector<int>& textureToImage,
-                         std::vector<std::string>& warnings);
+// Out-of-spec factors are clamped with a warning naming the material, the field, its value and the range;
+// emission is limited to `maxEmission` cd/m^2.
+Material convertMaterial(const tinygltf::Material& material, size_t index, const std::vector<int>& textureToImage,
+                         float maxEmission, std::vector<std::string>& warnings);
 // KHR_lights_punctual light placed by a node's world transform (it shines along the node's -Z). false +
-// `problem`: the light is unusable; `warning` (may be set on success): what was repaired.
-bool convertLight(const tinygltf::Light& light, const glm::mat4& world, Light& out, std::string& problem,
-                  std::string& warning);
+// `problem`: the light is unusable; `warning` (may be set on success): what was repaired (out-of-spec
+// values clamped, the intensity to `maxIntensity`), each with its value and the limit.
+bool convertLight(const tinygltf::Light& light, const glm::mat4& world, float maxIntensity, Light& out,
+                  std::string& problem, std::string& warning);
 // Perspective camera looking down the node's -Z with +Y up.
 bool convertCamera(const tinygltf::Camera& camera, const glm::mat4& world, Camera& out, std::string& problem);
 

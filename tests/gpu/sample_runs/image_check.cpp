@@ -7,6 +7,9 @@
 //   image-check size FILE W H                     the image is W x H pixels
 //   image-check shift A B DX DY MAXERR [x y w h]  the brightness-weighted centroid moves from A to B by
 //                                                 (DX, DY) pixels, to within MAXERR pixels
+//   image-check finite FILE                       every value is finite
+// Every mode first requires every image it reads to be finite (no NaN or inf anywhere): a check on a
+// mean or a centroid must not pass over, or be poisoned by, non-finite pixels.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -65,11 +68,23 @@ int fail(const std::string& message) {
     return 1;
 }
 
+// The image, or an error naming how many values are NaN or inf.
+caustics::Result<FloatImage> readFinite(const char* path) {
+    auto image = caustics::sample::readImage(path);
+    if (!image) return image;
+    size_t bad = 0;
+    for (float v : image->pixels) bad += std::isfinite(v) ? 0 : 1;
+    if (bad > 0)
+        return caustics::makeError(std::string(path) + ": " + std::to_string(bad) + " of " + std::to_string(image->pixels.size()) +
+                                   " values are not finite (NaN or inf)");
+    return image;
+}
+
 // B's brightness-weighted centroid = A's + (DX, DY), to within MAXERR pixels.
 int checkShift(int argc, char** argv) {
     if (argc != 7 && argc != 11) return fail("usage: image-check shift A B DX DY MAXERR [x y w h]");
-    auto a = caustics::sample::readImage(argv[2]);
-    auto b = caustics::sample::readImage(argv[3]);
+    auto a = readFinite(argv[2]);
+    auto b = readFinite(argv[3]);
     if (!a || !b) return fail(!a ? a.message() : b.message());
     if (a->width != b->width || a->height != b->height || a->channels < 3 || b->channels != a->channels)
         return fail("the images differ in size or channels");
@@ -87,9 +102,16 @@ int checkShift(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 4) return fail("usage: image-check mean FILE MIN | differ|match|brighter A B THRESHOLD [x y w h]");
+    if (argc < 3) return fail("usage: image-check mean FILE MIN | differ|match|brighter A B THRESHOLD [x y w h]");
     std::string mode = argv[1];
-    auto a = caustics::sample::readImage(argv[2]);
+    if (mode == "finite" && argc == 3) {
+        auto image = readFinite(argv[2]);
+        if (!image) return fail(image.message());
+        std::printf("image-check: every value of %s is finite\n", argv[2]);
+        return 0;
+    }
+    if (argc < 4) return fail("usage: image-check mean FILE MIN | finite FILE | differ|match|brighter A B THRESHOLD [x y w h]");
+    auto a = readFinite(argv[2]);
     if (!a) return fail(a.message());
     if (mode == "size" && argc == 5) {
         uint32_t w = uint32_t(std::atoi(argv[3])), h = uint32_t(std::atoi(argv[4]));
@@ -105,7 +127,7 @@ int main(int argc, char** argv) {
     }
     if (argc < 5) return fail("differ/match need two files and a threshold");
     if (mode == "shift") return checkShift(argc, argv);
-    auto b = caustics::sample::readImage(argv[3]);
+    auto b = readFinite(argv[3]);
     if (!b) return fail(b.message());
     if (a->width != b->width || a->height != b->height || a->channels < 3 || b->channels != a->channels)
         return fail("the images differ in size or channels");

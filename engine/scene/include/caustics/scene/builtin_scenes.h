@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "caustics/rhi/result.h"
+#include "caustics/scene/gltf.h"
 #include "caustics/scene/scene.h"
 
 namespace caustics::scene {
@@ -49,7 +50,8 @@ size_t addCausticObjects(Scene& scene, const CausticPlacement& placement);
 // group stands at the centre of the scene's floor (the bounding box's minimum y, centre x/z),
 // scaled to min(extent.x, extent.z) / 3 (Sponza, ~12 m wide courtyard -> objects ~0.5 m tall); the
 // third light aims at the box's far (-x, -z) upper corner, away from the group.
-Result<Scene> loadModifiedSponza(const std::string& gltfPath);
+// `options` as for loadGltf (e.g. LoadOptions::assetRoot).
+Result<Scene> loadModifiedSponza(const std::string& gltfPath, const LoadOptions& options = {});
 
 // Analytic test scenes (physics tests). The diffuse plane is y = 0, white (albedo planeAlbedo),
 // 2*planeHalfSize wide; the directional light shines straight down (-Y) unless stated.
