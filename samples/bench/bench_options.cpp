@@ -127,7 +127,7 @@ std::string benchUsage() {
         "  --reference-frames N        sweep: frames of 16 rays per texel in the quality reference (default 16)\n"
         "  --sweeps LIST               sweep: any of lights,rays,depth,map,image (default all)\n"
         "  --photons N                 photons per frame split over the layers in view (0 .. 2^28; 0: per texel)\n"
-        "  --time-target MS            steer the photons so the caustic passes take MS ms (level mode: 1)\n"
+        "  --time-target MS            steer the photons so the caustic passes take MS milliseconds (level mode: 1)\n"
         "modes:\n";
     for (const BenchMode& mode : benchModes()) text += "  " + std::string(mode.name) + "  " + mode.summary + "\n";
     return text;
