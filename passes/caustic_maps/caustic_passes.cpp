@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <cstdio>
 #include <cstring>
 
 #include "caustic_maps/caustic_internal.h"
@@ -10,7 +11,8 @@ namespace caustics {
 
 void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
     graph.addPass("caustics.setup", [&](rg::PassBuilder& b) {
-        const uint64_t pixelBytes = uint64_t(f.width) * f.height * 12;
+        // RGB per pixel: float or uint32 words, or uint64 fixed-point words.
+        const uint64_t pixelBytes = uint64_t(f.width) * f.height * (f.wideFixedPoint ? 24 : 12);
         auto buffer = [&](const char* name, uint64_t bytes, rhi::BufferUsage usage) {
             return b.write(b.createBuffer(name, rhi::BufferDesc().setByteSize(bytes).setUsage(usage).setDebugName(name)),
                            rg::Access::CopyDest);
@@ -19,7 +21,9 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.camera = buffer("caustics.camera", sizeof(CameraConstants), rhi::BufferUsage::Constant | rhi::BufferUsage::CopyDest);
         f.maps = buffer("caustics.maps", std::max<size_t>(1, f.plan.maps.size()) * sizeof(CausticMapGpu), storage);
         f.radiance1 = buffer("caustics.firstTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
-        f.radiance2 = buffer("caustics.secondTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
+        // One accumulation buffer for both types unless the host asked to see them apart.
+        if (f.separateTypes)
+            f.radiance2 = buffer("caustics.secondTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
         f.stats = buffer("caustics.stats", kStatCount * 4, storage | rhi::BufferUsage::CopySource);
         // The forward grid (emitters, samples per texel, 1), counted up by caustics.emitters.
         f.forwardArgs = buffer("caustics.forwardArgs", 12, storage | rhi::BufferUsage::Indirect);
@@ -37,8 +41,11 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
             if (!maps.empty()) cmd.writeBuffer(ctx.buffer(h.maps), maps.data(), maps.size() * sizeof(CausticMapGpu));
             else cmd.fillBuffer(ctx.buffer(h.maps), 0);
             cmd.fillBuffer(ctx.buffer(h.radiance1), 0);
-            cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
-            cmd.fillBuffer(ctx.buffer(h.stats), 0);
+            if (h.separateTypes) cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
+            // Every counter 0 and the fixed-point scale in the last slot (disjoint ranges: no write-after-write).
+            const float scale = h.res->floatAtomics ? 0.0f : h.fixedPointScale;
+            cmd.fillBuffer(ctx.buffer(h.stats), 0, 0, uint64_t(kStatFixedPointScale) * 4);
+            cmd.writeBuffer(ctx.buffer(h.stats), &scale, 4, uint64_t(kStatFixedPointScale) * 4);
             cmd.writeBuffer(ctx.buffer(h.forwardArgs), forwardGrid, sizeof(forwardGrid));
             if (secondType) cmd.writeBuffer(ctx.buffer(h.backwardArgs), backwardGrid, sizeof(backwardGrid));
         };
@@ -83,11 +90,12 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene), in.settings.mapOccluders);
     CAUSTICS_CHECK(checkDeviceLimits(in, plan));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
-    CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height));
-    CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
-    if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
     res->frameSlot = in.frameIndex % uint32_t(res->frameSets.size());
     res->frameSets[res->frameSlot].clear();
+    res->retiredSphereTlas[res->frameSlot].clear();
+    CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height, res->frameSlot));
+    CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
+    if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
 
     CausticFrame f;
     f.in = &in;
@@ -95,10 +103,15 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     f.history = history;
     f.width = in.gbuffer.width;
     f.height = in.gbuffer.height;
+    f.separateTypes = in.separateTypes;
+    f.wideFixedPoint = !res->floatAtomics && res->int64Atomics;
+    f.fixedPointScale = fixedPointScale(f.wideFixedPoint, in.settings.exposure * in.scene->exposure);
     f.plan = std::move(plan);
 
     CausticOutputs out;
     out.floatAtomics = res->floatAtomics;
+    out.wideFixedPoint = f.wideFixedPoint;
+    out.fixedPointScale = res->floatAtomics ? 0.0f : f.fixedPointScale;
     addSetupPass(graph, f);
     if (!f.plan.maps.empty()) {
         addMapPass(graph, f);
@@ -109,7 +122,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     addResolveAndFilterPasses(graph, f, out);
     out.firstTypeBuffer = f.radiance1;
     out.secondTypeBuffer = f.radiance2;
-    out.hits = f.hits;
+    if (in.settings.secondType) out.hits = f.hits;   // else a placeholder the forward pass stored nothing in
     out.stats = f.stats;
     out.spheres = f.spheres;
     out.mapObjectIds = f.mapIds;
@@ -117,11 +130,16 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     return out;
 }
 
+float fixedPointScale(bool wideWords, float preExposure) {
+    const float pre = std::isfinite(preExposure) && preExposure > 0.0f ? preExposure : 1.0f;
+    return (wideWords ? kFixedPointScale64 : kFixedPointScale) * pre;
+}
+
 std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, const CausticsSettings& settings) {
     std::vector<std::string> warnings;
     if (stats.size() <= kStatStoredHitAttempts) return warnings;
     const uint32_t offered = stats[kStatStoredHitAttempts];
-    if (offered > settings.maxStoredHits)
+    if (settings.secondType && offered > settings.maxStoredHits)
         warnings.push_back("caustic hit buffer overflowed: " + std::to_string(offered) + " diffuse hits offered, " +
                            std::to_string(settings.maxStoredHits) + " kept (CausticsSettings::maxStoredHits); " +
                            "second-type caustics miss the rest");
@@ -129,6 +147,16 @@ std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, c
         warnings.push_back(std::to_string(stats[kStatAccumulationGiveUps]) +
                            " caustic radiance contributions were dropped: the float compare-and-swap loop gave up "
                            "under contention (D3D12 float path, docs/d3d12.md); the fixed-point path never drops");
+    if (stats.size() > kStatFixedPointScale && stats[kStatSaturatedAdds] > 0) {
+        float scale = 0.0f;
+        std::memcpy(&scale, &stats[kStatFixedPointScale], 4);
+        char limit[32];
+        std::snprintf(limit, sizeof(limit), "%.3g", scale > 0.0f ? (scale > 1e10f ? 1.8e19 : 4.29e9) / scale : 0.0);
+        warnings.push_back(std::to_string(stats[kStatSaturatedAdds]) +
+                           " fixed-point caustic radiance adds saturated (pixels clipped at " + limit +
+                           " cd/m^2 this frame): the pre-exposure (CausticsSettings::exposure x Scene::exposure) is "
+                           "too high for this light; lower it (docs/caustics.md, \"Fixed point\")");
+    }
     if (stats.size() > kStatSphereCapacity && stats[kStatSpheresDropped] > 0)
         warnings.push_back(std::to_string(stats[kStatSpheresDropped]) +
                            " second-type spheres dropped this frame, the sphere TLAS grows next frame: " +

@@ -187,6 +187,8 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         ci.frameIndex = in.frameIndex;
         ci.resetHistory = in.resetHistory;
         ci.history = &view.history;
+        // Separate first/second-type buffers only for the AOVs that show one (docs/caustics.md "Memory").
+        ci.separateTypes = m.settings.aov == CausticsAov::FirstType || m.settings.aov == CausticsAov::SecondType;
         CAUSTICS_TRY(CausticOutputs co, addCausticPasses(graph, m.caustics, ci));
         out.caustics = co.radiance;
         out.firstType = co.firstType;

@@ -20,5 +20,6 @@ int runCausticsMode(const BenchOptions& options);
 int runFrameMode(const BenchOptions& options);
 int runSweepMode(const BenchOptions& options);
 int runFiguresMode(const BenchOptions& options);
+int runMemoryMode(const BenchOptions& options);
 
 }  // namespace caustics::bench

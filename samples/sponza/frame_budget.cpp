@@ -1,5 +1,7 @@
 #include "frame_budget.h"
 
+#include "caustics/sphere_capacity.h"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -86,12 +88,16 @@ uint64_t FrameMemory::persistentBytes(rhi::IDevice& device, uint32_t width, uint
     if (s.causticsEnabled && s.filter)   // the view's filter history (caustic_resources.cpp ensureHistory)
         bytes += 2 * texture(rhi::Format::RGBA32_FLOAT) + texture(rhi::Format::R32_FLOAT) +
                  texture(rhi::Format::RGBA16_FLOAT) + texture(rhi::Format::R32_UINT);
-    if (s.causticsEnabled && s.secondType) bytes += kSphereInstanceBytes * width * height;
+    // The sphere TLAS's first allocation at this size (caustics/sphere_capacity.h; it grows with the counts).
+    if (s.causticsEnabled && s.secondType) bytes += kSphereInstanceBytes * initialSphereAllocation(width * height);
     return bytes;
 }
 
 uint64_t FrameMemory::heapBytes(uint32_t width, uint32_t height) const {
-    return uint64_t(std::ceil(double(fixedBytes) + heapBytesPerPixel * double(width) * double(height)));
+    const uint64_t pixels = uint64_t(width) * height;
+    const uint64_t slots = pixels > UINT32_MAX ? pixels / kInitialSphereFractionDivisor : initialSphereAllocation(uint32_t(pixels));
+    const double linear = double(fixedBytes) + heapBytesPerPixel * double(pixels);
+    return uint64_t(std::ceil(std::max(0.0, linear - double(sphereSlotBytes) * double(pixels - slots))));
 }
 
 uint64_t FrameMemory::bytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const {
@@ -108,6 +114,9 @@ Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& mod
     FrameMemory m;
     m.heapBytesPerPixel = std::max(0.0, (double(graph[1].heap) - double(graph[0].heap)) / (pixels1 - pixels0));
     m.fixedBytes = uint64_t(std::max(0.0, double(graph[0].heap) - m.heapBytesPerPixel * pixels0));
+    // Both sizes are under the sphere allocation's floor (a slot per pixel there).
+    const CausticsSettings& s = module.settings();
+    if (s.causticsEnabled && s.secondType) m.sphereSlotBytes = sizeof(CausticSphere) + sizeof(rhi::InstanceDesc);
     for (const auto& [name, bytes] : graph[1].transients)
         for (const auto& [smallName, smallBytes] : graph[0].transients)
             if (name == smallName && bytes == smallBytes && bytes > m.largestFixedBytes) {
@@ -115,6 +124,22 @@ Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& mod
                 m.largestFixedBytes = bytes;
             }
     return m;
+}
+
+Result<std::vector<MemoryEntry>> moduleFrameReport(rhi::IDevice& device, CausticsModule& module, uint32_t width,
+                                                   uint32_t height) {
+    rg::RenderGraph graph;
+    FrameInputs in;
+    in.camera = cameraViewMatrices(scene::Camera{}, width, height);
+    in.width = width;
+    in.height = height;
+    CAUSTICS_TRY(FrameOutputs out, module.addPasses(graph, in));
+    graph.markOutput(out.display, rhi::ResourceState::CopySource);
+    graph.markOutput(out.hdr, rhi::ResourceState::CopySource);
+    CAUSTICS_CHECK(graph.compile(rg::DeviceMemorySizer(device)));
+    std::vector<MemoryEntry> report = module.memoryReport();
+    appendFrameMemory(graph, report);
+    return report;
 }
 
 Result<FrameMemory> checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {

@@ -29,6 +29,8 @@ static const uint kStatGatherHits = 2u;
 static const uint kStatSpheres = 3u;
 static const uint kStatRaysPerLight = 4u;
 static const uint kStatAccumulationGiveUps = 68u;   // kStatForwardSegments + 4 (caustic_passes.h)
+static const uint kStatSaturatedAdds = 73u;         // fixed-point adds that pinned a word at its maximum
+static const uint kStatFixedPointScale = 74u;       // float bits: value x this = fixed-point word (host-written)
 
 struct TracePayload {   // t < 0 = miss
     float2 barycentrics;

@@ -49,6 +49,8 @@ const uint kStatGatherHits = 2u;
 const uint kStatSpheres = 3u;
 const uint kStatRaysPerLight = 4u;
 const uint kStatAccumulationGiveUps = 68u;   // kStatForwardSegments + 4 (caustic_passes.h); only HLSL's CAS loop counts
+const uint kStatSaturatedAdds = 73u;         // fixed-point adds that pinned a word at its maximum
+const uint kStatFixedPointScale = 74u;       // float bits: value x this = fixed-point word (written by the host)
 
 // Closest-hit payload of trace.rchit / trace.rmiss: t < 0 = miss.
 struct TracePayload {
