@@ -5,7 +5,11 @@
 #include <cstdio>
 #include <cstring>
 
+#include <glm/gtc/packing.hpp>
+
 #include "caustic_maps/caustic_internal.h"
+#include "caustics/sphere_capacity.h"
+#include "common/octahedral.h"
 
 namespace caustics {
 
@@ -54,7 +58,8 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
 
 // Refuses settings the device cannot run, naming the setting, before anything is allocated.
 // 2^30 is the smallest maxRayDispatchInvocationCount Vulkan allows and D3D12's DispatchRays limit;
-// every sphere of the second type is one TLAS instance, so W x H must fit maxInstanceCount.
+// every sphere of the second type is one TLAS instance, so the first sphere allocation
+// (caustics/sphere_capacity.h) must fit maxInstanceCount (growth stops at it).
 Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan) {
     constexpr uint64_t kMaxRayLaunches = 1ull << 30;
     const uint64_t samplesPerTexel = uint64_t(std::ceil(in.settings.raysPerTexel));
@@ -66,11 +71,12 @@ Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& pla
                          std::to_string(plan.maps.size()) + " light maps = " + std::to_string(launches) +
                          " ray launches, over the 2^30 a dispatch may have; lower mapResolution or raysPerTexel");
     const uint64_t pixels = uint64_t(in.gbuffer.width) * in.gbuffer.height;
+    const uint64_t slots = pixels > UINT32_MAX ? pixels : initialSphereAllocation(uint32_t(pixels));
     const uint64_t maxInstances = in.device ? in.device->capabilities().maxInstanceCount : 0;
-    if (in.settings.secondType && maxInstances != 0 && pixels > maxInstances)
-        return makeError("addCausticPasses: secondType needs one sphere instance per pixel, " +
-                         std::to_string(in.gbuffer.width) + "x" + std::to_string(in.gbuffer.height) + " = " +
-                         std::to_string(pixels) + " is over the device's maxInstanceCount " +
+    if (in.settings.secondType && maxInstances != 0 && slots > maxInstances)
+        return makeError("addCausticPasses: secondType's first sphere allocation (a sixteenth of the pixels) at " +
+                         std::to_string(in.gbuffer.width) + "x" + std::to_string(in.gbuffer.height) + " is " +
+                         std::to_string(slots) + " instances, over the device's maxInstanceCount " +
                          std::to_string(maxInstances) + "; lower the resolution or turn secondType off");
     return okStatus();
 }
@@ -129,6 +135,9 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     out.plan = std::move(f.plan);
     return out;
 }
+
+glm::vec3 causticHitNormal(const CausticHit& hit) { return shader::octDecode(glm::unpackSnorm2x16(hit.normal)); }
+glm::vec3 causticHitIncoming(const CausticHit& hit) { return shader::octDecode(glm::unpackSnorm2x16(hit.incoming)); }
 
 float fixedPointScale(bool wideWords, float preExposure) {
     const float pre = std::isfinite(preExposure) && preExposure > 0.0f ? preExposure : 1.0f;

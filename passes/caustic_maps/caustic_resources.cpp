@@ -4,6 +4,7 @@
 
 #include "caustics/pass_shaders.h"
 #include "caustics/sphere_capacity.h"
+#include <algorithm>
 #include <cstring>
 
 #include "caustics/rhi/log.h"
@@ -158,7 +159,9 @@ Status CausticResources::Impl::ensureSizeResources(uint32_t width, uint32_t heig
     const uint32_t pixels = width * height;
     // Slots by the counts (caustics/sphere_capacity.h), not one instance per pixel: 2.07 M instances at
     // 1080p were the largest persistent allocation (docs/caustics.md, "Memory").
-    const uint32_t target = grownSphereAllocation(tlasCapacity, sphereAllocationWanted, pixels);
+    const uint32_t maxInstances = d.capabilities().maxInstanceCount;
+    uint32_t target = grownSphereAllocation(tlasCapacity, sphereAllocationWanted, pixels);
+    if (maxInstances != 0) target = std::max(tlasCapacity, std::min(target, maxInstances));   // checkDeviceLimits
     sphereAllocationWanted = 0;
     if (!sphereTlas || target > tlasCapacity) {
         rhi::AccelStructDesc tlas;

@@ -94,10 +94,9 @@ uint64_t FrameMemory::persistentBytes(rhi::IDevice& device, uint32_t width, uint
 }
 
 uint64_t FrameMemory::heapBytes(uint32_t width, uint32_t height) const {
-    const uint64_t pixels = uint64_t(width) * height;
-    const uint64_t slots = pixels > UINT32_MAX ? pixels / kInitialSphereFractionDivisor : initialSphereAllocation(uint32_t(pixels));
-    const double linear = double(fixedBytes) + heapBytesPerPixel * double(pixels);
-    return uint64_t(std::ceil(std::max(0.0, linear - double(sphereSlotBytes) * double(pixels - slots))));
+    // Linear: past kMinSphereAllocation pixels the sphere list and instances stop growing per pixel
+    // (caustics/sphere_capacity.h), so this over-estimates there, on the safe side for a refusal.
+    return uint64_t(std::ceil(double(fixedBytes) + heapBytesPerPixel * double(width) * double(height)));
 }
 
 uint64_t FrameMemory::bytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const {
@@ -114,9 +113,6 @@ Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& mod
     FrameMemory m;
     m.heapBytesPerPixel = std::max(0.0, (double(graph[1].heap) - double(graph[0].heap)) / (pixels1 - pixels0));
     m.fixedBytes = uint64_t(std::max(0.0, double(graph[0].heap) - m.heapBytesPerPixel * pixels0));
-    // Both sizes are under the sphere allocation's floor (a slot per pixel there).
-    const CausticsSettings& s = module.settings();
-    if (s.causticsEnabled && s.secondType) m.sphereSlotBytes = sizeof(CausticSphere) + sizeof(rhi::InstanceDesc);
     for (const auto& [name, bytes] : graph[1].transients)
         for (const auto& [smallName, smallBytes] : graph[0].transients)
             if (name == smallName && bytes == smallBytes && bytes > m.largestFixedBytes) {

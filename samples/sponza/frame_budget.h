@@ -17,11 +17,8 @@ Status checkFrameSize(const rhi::Capabilities& caps, uint32_t width, uint32_t he
 struct FrameMemory {
     uint64_t fixedBytes = 0;          // transient heap at zero pixels: caustic maps, hit buffer, ...
     double heapBytesPerPixel = 0.0;   // transient heap growth per pixel: G-buffer, direct, caustic images, ...
-    // Sphere list + instance bytes per slot (second type on): they are per pixel at the small sizes
-    // measured but follow initialSphereAllocation (caustics/sphere_capacity.h) past its floor.
-    uint64_t sphereSlotBytes = 0;
     std::string largestFixed;         // the largest transient whose size does not depend on the pixels
-    uint64_t largestFixedBytes = 0;   // (the hit buffer: CausticsSettings::maxStoredHits x 80 bytes)
+    uint64_t largestFixedBytes = 0;   // (the hit buffer: CausticsSettings::maxStoredHits x 64 bytes)
     uint64_t heapBytes(uint32_t width, uint32_t height) const;
     // Per frame size, from the device's memory requirements of the persistent and read-back resources.
     uint64_t persistentBytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const;

@@ -62,22 +62,26 @@ inline constexpr uint32_t kStatSaturatedAdds = kStatForwardSegments + 9;
 inline constexpr uint32_t kStatFixedPointScale = kStatForwardSegments + 10;
 inline constexpr uint32_t kStatCount = kStatFixedPointScale + 1;
 
-// One stored forward diffuse hit (std430, 80 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
-// It carries the photon's flux, its incoming direction and the receiver's glTF BRDF parameters, so a
-// gather evaluates the same BRDF as the splat and direct lighting (shaders/common/bsdf.h).
+// One stored forward diffuse hit (std430, 64 bytes; GLSL mirror CausticHitRecord in
+// forward_trace/caustic_hit.glsl). It carries the photon's flux, its incoming direction and the
+// receiver's glTF BRDF parameters, so a gather evaluates the same BRDF as the splat and direct
+// lighting (shaders/common/bsdf.h). The two directions are octahedral snorm16 x 2 (80 -> 64 bytes,
+// docs/caustics.md "Memory"); causticHitNormal / causticHitIncoming decode them.
 struct CausticHit {
     glm::vec3 position;
     uint32_t objectId;           // instance index + 1
-    glm::vec3 normal;            // unit shading normal, on the side the photon arrived from
-    uint32_t light;
     glm::vec3 flux;              // photon flux, lm per channel
-    uint32_t metallicRoughness;  // unorm16 x 2: metallic (low half), roughness (high half)
-    glm::vec3 incoming;          // unit, from the hit back along the photon's last segment (wi)
-    float transmission;
+    uint32_t light;
     glm::vec3 baseColor;         // linear; a specular material's diffuse layer stores dielectricF0 = 0
     float dielectricF0;
+    uint32_t normal;             // unit shading normal on the side the photon arrived from (octahedral)
+    uint32_t incoming;           // unit, from the hit back along the photon's last segment (wi; octahedral)
+    uint32_t metallicRoughness;  // unorm16 x 2: metallic (low half), roughness (high half)
+    float transmission;
 };
-static_assert(sizeof(CausticHit) == 80);
+static_assert(sizeof(CausticHit) == 64);
+glm::vec3 causticHitNormal(const CausticHit& hit);
+glm::vec3 causticHitIncoming(const CausticHit& hit);
 
 // One backward (second-type) integration sphere (std430, 64 bytes), appended by caustics.backward: the
 // first min(kStatSpheres, kStatSphereCapacity) entries of CausticOutputs::spheres are valid.

@@ -33,10 +33,11 @@ inline constexpr uint32_t kMinSphereCapacity = 64;
 uint32_t sphereTlasCapacity(std::optional<uint32_t> earlierCount, uint32_t pixels);
 
 // The first allocation at an output size: a sixteenth of the pixels (a view whose specular surfaces
-// cover more grows it within framesInFlight + 1 frames), at least kMinSphereAllocation (small images,
-// such as the tests', get a slot for every pixel), at most W x H.
+// cover more grows it within framesInFlight + 1 frames), at least kMinSphereAllocation (2^17: small
+// images, such as the tests' and the sample's memory fit at 320x240, get a slot for every pixel; at
+// 1080p it is the sixteenth's 129,600 rounded up), at most W x H.
 inline constexpr uint32_t kInitialSphereFractionDivisor = 16;
-inline constexpr uint32_t kMinSphereAllocation = 1u << 16;
+inline constexpr uint32_t kMinSphereAllocation = 1u << 17;
 uint32_t initialSphereAllocation(uint32_t pixels);
 
 // The allocation after a frame asked for `wanted` slots (a sphereTlasCapacity result past the

@@ -1,7 +1,7 @@
 // The sphere TLAS capacity policy (caustics/sphere_capacity.h): W x H without an earlier count, else the
 // earlier count with 1.25 x headroom rounded up to an eighth of a power of two, within
 // [kMinSphereCapacity, W x H]; 0 after a frame without spheres. The allocation the capacity is clamped
-// to: a sixteenth of the pixels (at least 65,536, at most W x H), grown to what a frame asked for.
+// to: a sixteenth of the pixels (at least 131,072, at most W x H), grown to what a frame asked for.
 #include <gtest/gtest.h>
 
 #include "caustics/sphere_capacity.h"
@@ -42,10 +42,10 @@ TEST(SphereCapacity, NoEarlierSphereMeansNoBuild) {
 }
 
 TEST(SphereAllocation, FirstAllocationIsASixteenthOfThePixelsWithAFloor) {
-    EXPECT_EQ(initialSphereAllocation(kPixels), kPixels / 16);          // 129,600 at 1080p
+    EXPECT_EQ(initialSphereAllocation(kPixels), kMinSphereAllocation);   // 129,600 at 1080p, under the floor
     EXPECT_EQ(initialSphereAllocation(3840u * 2160u), 3840u * 2160u / 16);
     EXPECT_EQ(initialSphereAllocation(640u * 480u), kMinSphereAllocation);
-    EXPECT_EQ(initialSphereAllocation(96u * 96u), 96u * 96u) << "small images keep a slot per pixel";
+    EXPECT_EQ(initialSphereAllocation(320u * 240u), 320u * 240u) << "small images keep a slot per pixel";
 }
 
 TEST(SphereAllocation, GrowsToTheCapacityAFrameAskedForNeverShrinks) {
