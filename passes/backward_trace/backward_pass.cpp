@@ -21,7 +21,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         if (f.in->sceneTlas.valid()) b.read(f.in->sceneTlas);
         f.specularPixels = b.read(f.specularPixels, rg::Access::SampledRead);
         if (indirect) f.backwardArgs = b.read(f.backwardArgs, rg::Access::IndirectArgument);
-        f.spheres = b.write(b.createBuffer("caustics.spheres", rhi::BufferDesc().setByteSize(uint64_t(pixels) * sizeof(CausticSphere))
+        f.spheres = b.write(b.createBuffer("caustics.spheres", rhi::BufferDesc().setByteSize(uint64_t(f.sphereAllocation) * sizeof(CausticSphere))
                                                                    .setUsage(rhi::BufferUsage::Storage).setDebugName("caustics.spheres")),
                             rg::Access::StorageWrite);
         f.instances = b.write(f.instances, rg::Access::StorageWrite);
@@ -76,7 +76,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         b.read(blas, rg::Access::AccelStructBuildRead);
         f.sphereTlas = b.write(f.sphereTlas, rg::Access::AccelStructBuild);
         CausticFrame h = f;
-        // Over the frame's capacity, not W x H: the TLAS stays allocated for W x H (any capacity fits).
+        // Over the frame's capacity, never more than the TLAS's allocation (caustics/sphere_capacity.h).
         return [=](rg::PassContext& ctx) {
             if (*h.sphereCapacity == 0) return;   // no sphere the earlier frame: nothing built, nothing gathered
             ctx.cmd().buildTopLevelFromBuffer(ctx.accelStruct(h.sphereTlas), ctx.buffer(h.instances), 0,
@@ -96,7 +96,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         f.spheres = b.read(f.spheres, rg::Access::SampledRead);
         f.hits = b.read(f.hits, rg::Access::SampledRead);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
-        f.radiance2 = b.write(f.radiance2, rg::Access::StorageReadWrite);
+        f.secondTypeTarget() = b.write(f.secondTypeTarget(), rg::Access::StorageReadWrite);
         uint32_t maxHits = f.in->settings.maxStoredHits;
         CausticFrame h = f;
         return [=](rg::PassContext& ctx) {
@@ -107,7 +107,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
                 .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(h.spheres), false))
                 .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(h.hits), false))
                 .add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(h.stats)))
-                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.radiance2)));
+                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.secondTypeTarget())));
             rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gatherLayout, d);
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();

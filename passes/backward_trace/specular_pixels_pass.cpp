@@ -20,14 +20,14 @@ void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.backwardArgs = b.write(f.backwardArgs, rg::Access::StorageReadWrite);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
         f.instances = b.write(b.createBuffer("caustics.sphereInstances",
-                                             rhi::BufferDesc().setByteSize(pixels * sizeof(rhi::InstanceDesc))
+                                             rhi::BufferDesc().setByteSize(uint64_t(f.sphereAllocation) * sizeof(rhi::InstanceDesc))
                                                  .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::AccelStructInput)
                                                  .setDebugName("caustics.sphereInstances")),
                               rg::Access::CopyDest);
         CausticFrame h = f;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            *h.sphereCapacity = chooseSphereCapacity(*ctx.device(), *h.sphereReadback, h.width, h.height);
+            *h.sphereCapacity = chooseSphereCapacity(r, *h.sphereReadback, h.width, h.height, h.sphereAllocation);
             rhi::ICommandList& cmd = ctx.cmd();
             if (*h.sphereCapacity > 0)
                 cmd.fillBuffer(ctx.buffer(h.instances), 0, 0, uint64_t(*h.sphereCapacity) * sizeof(rhi::InstanceDesc));

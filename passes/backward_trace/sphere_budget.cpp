@@ -19,6 +19,14 @@ uint32_t sphereTlasCapacity(std::optional<uint32_t> earlierCount, uint32_t pixel
     return uint32_t(std::min<uint64_t>(std::max<uint64_t>(rounded, kMinSphereCapacity), pixels));
 }
 
+uint32_t initialSphereAllocation(uint32_t pixels) {
+    return std::min(pixels, std::max(kMinSphereAllocation, pixels / kInitialSphereFractionDivisor));
+}
+
+uint32_t grownSphereAllocation(uint32_t allocated, uint32_t wanted, uint32_t pixels) {
+    return std::max({allocated, initialSphereAllocation(pixels), std::min(wanted, pixels)});
+}
+
 void prepareSphereBudget(CausticFrame& f) {
     std::vector<SphereCountReadback>& slots = f.res->sphereCounts[f.history];
     slots.resize(f.res->frameSets.size());
@@ -30,16 +38,23 @@ void prepareSphereBudget(CausticFrame& f) {
         if (buffer) slot.buffer = buffer.value();   // without it every frame builds over W x H
     }
     f.sphereReadback = &slot;
-    f.sphereCapacity = std::make_shared<uint32_t>(f.width * f.height);
+    // The slots this frame's sphere list, instances and TLAS build have (ensureSizeResources sized the
+    // TLAS for at least as many).
+    f.sphereAllocation = std::min(f.res->tlasCapacity, f.width * f.height);
+    f.sphereCapacity = std::make_shared<uint32_t>(f.sphereAllocation);
 }
 
-uint32_t chooseSphereCapacity(rhi::IDevice& device, const SphereCountReadback& slot, uint32_t width, uint32_t height) {
+uint32_t chooseSphereCapacity(CausticResources::Impl& res, const SphereCountReadback& slot, uint32_t width,
+                              uint32_t height, uint32_t allocation) {
     std::optional<uint32_t> earlier;
     uint32_t count = 0;
     if (slot.buffer && slot.recorded && slot.width == width && slot.height == height &&
-        device.readBuffer(slot.buffer, &count, sizeof(count)))
+        res.device->readBuffer(slot.buffer, &count, sizeof(count)))
         earlier = count;
-    return sphereTlasCapacity(earlier, width * height);
+    const uint32_t capacity = sphereTlasCapacity(earlier, width * height);
+    // More than allocated: this frame drops the excess (counted), the next graph built grows the allocation.
+    if (earlier && capacity > allocation) res.sphereAllocationWanted = std::max(res.sphereAllocationWanted, capacity);
+    return std::min(capacity, allocation);
 }
 
 void addSphereCountReadbackPass(rg::RenderGraph& graph, CausticFrame& f) {

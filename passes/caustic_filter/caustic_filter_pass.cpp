@@ -43,21 +43,32 @@ bool dispatchImage(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::C
     return true;
 }
 
+// Resolve push flag (shaders/*/caustic_filter/resolve.*): one buffer holds both types, write only the sum.
+constexpr uint32_t kResolveCombinedOnly = 2u;
+
 void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
     const uint32_t w = f.width, h = f.height;
     graph.addPass("caustics.resolve", [&](rg::PassBuilder& b) {
+        // One buffer for both types (CausticFrameInputs::separateTypes off): it is bound twice and the
+        // radiance texture in all three image slots; the shader writes only the sum.
+        const bool separate = f.separateTypes;
         f.radiance1 = b.read(f.radiance1, rg::Access::SampledRead);
-        f.radiance2 = b.read(f.radiance2, rg::Access::SampledRead);
-        out.firstType = b.write(b.createTexture("caustics.firstType", imageDesc(w, h, "caustics.firstType")));
-        out.secondType = b.write(b.createTexture("caustics.secondType", imageDesc(w, h, "caustics.secondType")));
+        if (separate) {
+            f.radiance2 = b.read(f.radiance2, rg::Access::SampledRead);
+            out.firstType = b.write(b.createTexture("caustics.firstType", imageDesc(w, h, "caustics.firstType")));
+            out.secondType = b.write(b.createTexture("caustics.secondType", imageDesc(w, h, "caustics.secondType")));
+        }
         out.radiance = b.write(b.createTexture("caustics.radiance", imageDesc(w, h, "caustics.radiance")));
         CausticFrame fr = f;
         CausticOutputs o = out;
-        uint32_t push[4] = {w, h, f.res->floatAtomics ? 0u : 1u, 0};
+        struct { uint32_t width, height, flags; float invScale; } push{
+            w, h, (f.res->floatAtomics ? 0u : 1u) | (separate ? 0u : kResolveCombinedOnly) | (f.wideFixedPoint ? 4u : 0u),
+            1.0f / f.fixedPointScale};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 2, {}, {o.firstType, o.secondType, o.radiance});
+            rhi::BindingSetDesc d = separate ? textureBindings(ctx, 2, {}, {o.firstType, o.secondType, o.radiance})
+                                             : textureBindings(ctx, 2, {}, {o.radiance, o.radiance, o.radiance});
             d.add(rhi::BindingSetItem::storageBuffer(0, ctx.buffer(fr.radiance1), false))
-                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(fr.radiance2), false));
+                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(separate ? fr.radiance2 : fr.radiance1), false));
             dispatchImage(ctx, *fr.res, fr.res->filter.resolve, fr.res->filter.resolveLayout, d, push, w, h);
         };
     });

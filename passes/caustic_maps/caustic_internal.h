@@ -27,6 +27,7 @@ struct SphereCountReadback {
 struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
     bool floatAtomics = true;
+    bool int64Atomics = false;   // Capabilities::shaderBufferInt64Atomics: wide fixed-point words
     rhi::BindingLayoutHandle mapLayout, emitterLayout, forwardLayout, backwardLayout, gatherLayout;
     rhi::BindingLayoutHandle photonPlanLayout;
     rhi::ComputePipelineHandle photonPlanPipeline;   // caustic_maps/photon_plan_pass.cpp
@@ -44,7 +45,13 @@ struct CausticResources::Impl {
     rhi::BufferHandle sphereAabb;
     rhi::AccelStructHandle sphereBlas;
     rhi::AccelStructHandle sphereTlas;
-    uint32_t tlasCapacity = 0;
+    uint32_t tlasCapacity = 0;   // instance slots the sphere TLAS is allocated for (caustics/sphere_capacity.h)
+    // The largest capacity a frame asked for past its allocation (set when a graph executes); the next
+    // ensureSizeResources grows the allocation to it.
+    uint32_t sphereAllocationWanted = 0;
+    // Sphere TLASes replaced by a larger one, per frame slot: kept until that slot comes round again,
+    // when the frames that may still trace them have finished (as frameSets).
+    std::vector<std::vector<rhi::AccelStructHandle>> retiredSphereTlas;
     // Sphere counts read back per view (keyed by its history) and frame slot (backward_trace/caustics/sphere_capacity.h).
     std::map<const void*, std::vector<SphereCountReadback>> sphereCounts;
     CausticViewHistory ownHistory;   // used when CausticFrameInputs::history is null
@@ -53,7 +60,7 @@ struct CausticResources::Impl {
     uint32_t frameSlot = 0;
 
     Status ensureScenePipelines(const rhi::BindingLayoutHandle& sceneLayout);
-    Status ensureSizeResources(uint32_t width, uint32_t height);
+    Status ensureSizeResources(uint32_t width, uint32_t height, uint32_t frameSlot);
     Status ensureHistory(CausticViewHistory& history, uint32_t width, uint32_t height);
     // Binding set for this frame (kept alive); null after logging the error.
     rhi::BindingSetHandle makeSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
@@ -66,16 +73,25 @@ struct CausticFrame {
     CausticResources::Impl* res = nullptr;
     CausticViewHistory* history = nullptr;   // the view's (or res->ownHistory)
     uint32_t width = 0, height = 0;
+    bool separateTypes = true;   // CausticFrameInputs::separateTypes; false: radiance2 is invalid
+    // Fixed-point accumulation (floatAtomics off; docs/caustics.md "Fixed point"): one uint64 per channel
+    // (wideFixedPoint) or one uint, holding value x fixedPointScale.
+    bool wideFixedPoint = false;
+    float fixedPointScale = kFixedPointScale;
     rg::RgBuffer camera, maps, radiance1, radiance2, hits, stats, spheres, instances;
     rg::RgBuffer emitters, forwardArgs;   // caustics.emitters -> caustics.photonPlan -> caustics.forward
     rg::RgBuffer layerPlans, owners;      // CausticLayerPlanGpu per layer; CausticMapPlan::instanceLayers
     rg::RgBuffer specularPixels, backwardArgs;   // caustics.specularPixels -> caustics.backward
     // The sphere TLAS capacity of this frame, chosen when the graph executes (caustics/sphere_capacity.h).
     std::shared_ptr<uint32_t> sphereCapacity;
+    uint32_t sphereAllocation = 0;   // slots of this frame's sphere list and instance buffer
     SphereCountReadback* sphereReadback = nullptr;   // this view's and slot's
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereTlas;
     CausticMapPlan plan;
+    // The buffer the second type accumulates into: its own, or the first type's (one for both).
+    rg::RgBuffer& secondTypeTarget() { return separateTypes ? radiance2 : radiance1; }
+    const rg::RgBuffer& secondTypeTarget() const { return separateTypes ? radiance2 : radiance1; }
 };
 
 void addSetupPass(rg::RenderGraph& graph, CausticFrame& f);
@@ -92,7 +108,9 @@ void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);   // backwar
 // backward_trace/sphere_budget.cpp: the slot's read-back of the sphere count and f.sphereCapacity;
 // the capacity from it (when the graph executes); the pass that copies this frame's count.
 void prepareSphereBudget(CausticFrame& f);
-uint32_t chooseSphereCapacity(rhi::IDevice& device, const SphereCountReadback& slot, uint32_t width, uint32_t height);
+// (Records in res a capacity wanted past `allocation`, which it never returns more than.)
+uint32_t chooseSphereCapacity(CausticResources::Impl& res, const SphereCountReadback& slot, uint32_t width,
+                              uint32_t height, uint32_t allocation);
 void addSphereCountReadbackPass(rg::RenderGraph& graph, CausticFrame& f);
 void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out);
 

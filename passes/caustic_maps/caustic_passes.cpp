@@ -2,15 +2,21 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <cstdio>
 #include <cstring>
 
+#include <glm/gtc/packing.hpp>
+
 #include "caustic_maps/caustic_internal.h"
+#include "caustics/sphere_capacity.h"
+#include "common/octahedral.h"
 
 namespace caustics {
 
 void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
     graph.addPass("caustics.setup", [&](rg::PassBuilder& b) {
-        const uint64_t pixelBytes = uint64_t(f.width) * f.height * 12;
+        // RGB per pixel: float or uint32 words, or uint64 fixed-point words.
+        const uint64_t pixelBytes = uint64_t(f.width) * f.height * (f.wideFixedPoint ? 24 : 12);
         auto buffer = [&](const char* name, uint64_t bytes, rhi::BufferUsage usage) {
             return b.write(b.createBuffer(name, rhi::BufferDesc().setByteSize(bytes).setUsage(usage).setDebugName(name)),
                            rg::Access::CopyDest);
@@ -19,7 +25,9 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.camera = buffer("caustics.camera", sizeof(CameraConstants), rhi::BufferUsage::Constant | rhi::BufferUsage::CopyDest);
         f.maps = buffer("caustics.maps", std::max<size_t>(1, f.plan.maps.size()) * sizeof(CausticMapGpu), storage);
         f.radiance1 = buffer("caustics.firstTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
-        f.radiance2 = buffer("caustics.secondTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
+        // One accumulation buffer for both types unless the host asked to see them apart.
+        if (f.separateTypes)
+            f.radiance2 = buffer("caustics.secondTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
         f.stats = buffer("caustics.stats", kStatCount * 4, storage | rhi::BufferUsage::CopySource);
         // The forward grid (launches, 1, 1), written by caustics.photonPlan.
         f.forwardArgs = buffer("caustics.forwardArgs", 12, storage | rhi::BufferUsage::Indirect);
@@ -45,8 +53,11 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
             if (!maps.empty()) cmd.writeBuffer(ctx.buffer(h.maps), maps.data(), maps.size() * sizeof(CausticMapGpu));
             else cmd.fillBuffer(ctx.buffer(h.maps), 0);
             cmd.fillBuffer(ctx.buffer(h.radiance1), 0);
-            cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
-            cmd.fillBuffer(ctx.buffer(h.stats), 0);
+            if (h.separateTypes) cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
+            // Every counter 0 and the fixed-point scale in the last slot (disjoint ranges: no write-after-write).
+            const float scale = h.res->floatAtomics ? 0.0f : h.fixedPointScale;
+            cmd.fillBuffer(ctx.buffer(h.stats), 0, 0, uint64_t(kStatFixedPointScale) * 4);
+            cmd.writeBuffer(ctx.buffer(h.stats), &scale, 4, uint64_t(kStatFixedPointScale) * 4);
             cmd.writeBuffer(ctx.buffer(h.forwardArgs), forwardGrid, sizeof(forwardGrid));
             if (h.layerPlans.valid()) cmd.fillBuffer(ctx.buffer(h.layerPlans), 0);
             if (h.owners.valid()) {
@@ -71,7 +82,8 @@ uint64_t forwardLaunchBound(const CausticsSettings& s, const CausticMapPlan& pla
 
 // Refuses settings the device cannot run, naming the setting, before anything is allocated.
 // 2^30 is the smallest maxRayDispatchInvocationCount Vulkan allows and D3D12's DispatchRays limit;
-// every sphere of the second type is one TLAS instance, so W x H must fit maxInstanceCount.
+// every sphere of the second type is one TLAS instance, so the first sphere allocation
+// (caustics/sphere_capacity.h) must fit maxInstanceCount (growth stops at it).
 Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan) {
     constexpr uint64_t kMaxRayLaunches = 1ull << 30;
     const uint64_t launches = forwardLaunchBound(in.settings, plan);
@@ -83,11 +95,12 @@ Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& pla
                          " ray launches, over the 2^30 a dispatch may have; lower mapResolution, raysPerTexel or "
                          "photonsPerFrame");
     const uint64_t pixels = uint64_t(in.gbuffer.width) * in.gbuffer.height;
+    const uint64_t slots = pixels > UINT32_MAX ? pixels : initialSphereAllocation(uint32_t(pixels));
     const uint64_t maxInstances = in.device ? in.device->capabilities().maxInstanceCount : 0;
-    if (in.settings.secondType && maxInstances != 0 && pixels > maxInstances)
-        return makeError("addCausticPasses: secondType needs one sphere instance per pixel, " +
-                         std::to_string(in.gbuffer.width) + "x" + std::to_string(in.gbuffer.height) + " = " +
-                         std::to_string(pixels) + " is over the device's maxInstanceCount " +
+    if (in.settings.secondType && maxInstances != 0 && slots > maxInstances)
+        return makeError("addCausticPasses: secondType's first sphere allocation (a sixteenth of the pixels) at " +
+                         std::to_string(in.gbuffer.width) + "x" + std::to_string(in.gbuffer.height) + " is " +
+                         std::to_string(slots) + " instances, over the device's maxInstanceCount " +
                          std::to_string(maxInstances) + "; lower the resolution or turn secondType off");
     return okStatus();
 }
@@ -113,11 +126,12 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene), planOptions);
     CAUSTICS_CHECK(checkDeviceLimits(in, plan));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
-    CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height));
-    CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
-    if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
     res->frameSlot = in.frameIndex % uint32_t(res->frameSets.size());
     res->frameSets[res->frameSlot].clear();
+    res->retiredSphereTlas[res->frameSlot].clear();
+    CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height, res->frameSlot));
+    CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
+    if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
 
     CausticFrame f;
     f.in = &in;
@@ -125,10 +139,15 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     f.history = history;
     f.width = in.gbuffer.width;
     f.height = in.gbuffer.height;
+    f.separateTypes = in.separateTypes;
+    f.wideFixedPoint = !res->floatAtomics && res->int64Atomics;
+    f.fixedPointScale = fixedPointScale(f.wideFixedPoint, in.settings.exposure * in.scene->exposure);
     f.plan = std::move(plan);
 
     CausticOutputs out;
     out.floatAtomics = res->floatAtomics;
+    out.wideFixedPoint = f.wideFixedPoint;
+    out.fixedPointScale = res->floatAtomics ? 0.0f : f.fixedPointScale;
     addSetupPass(graph, f);
     if (!f.plan.maps.empty()) {
         addMapPass(graph, f);
@@ -140,7 +159,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     addResolveAndFilterPasses(graph, f, out);
     out.firstTypeBuffer = f.radiance1;
     out.secondTypeBuffer = f.radiance2;
-    out.hits = f.hits;
+    if (in.settings.secondType) out.hits = f.hits;   // else a placeholder the forward pass stored nothing in
     out.stats = f.stats;
     out.layerPlans = f.layerPlans;
     out.spheres = f.spheres;
@@ -149,11 +168,19 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     return out;
 }
 
+glm::vec3 causticHitNormal(const CausticHit& hit) { return shader::octDecode(glm::unpackSnorm2x16(hit.normal)); }
+glm::vec3 causticHitIncoming(const CausticHit& hit) { return shader::octDecode(glm::unpackSnorm2x16(hit.incoming)); }
+
+float fixedPointScale(bool wideWords, float preExposure) {
+    const float pre = std::isfinite(preExposure) && preExposure > 0.0f ? preExposure : 1.0f;
+    return (wideWords ? kFixedPointScale64 : kFixedPointScale) * pre;
+}
+
 std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, const CausticsSettings& settings) {
     std::vector<std::string> warnings;
     if (stats.size() <= kStatStoredHitAttempts) return warnings;
     const uint32_t offered = stats[kStatStoredHitAttempts];
-    if (offered > settings.maxStoredHits)
+    if (settings.secondType && offered > settings.maxStoredHits)
         warnings.push_back("caustic hit buffer overflowed: " + std::to_string(offered) + " diffuse hits offered, " +
                            std::to_string(settings.maxStoredHits) + " kept (CausticsSettings::maxStoredHits); " +
                            "second-type caustics miss the rest");
@@ -161,6 +188,16 @@ std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, c
         warnings.push_back(std::to_string(stats[kStatAccumulationGiveUps]) +
                            " caustic radiance contributions were dropped: the float compare-and-swap loop gave up "
                            "under contention (D3D12 float path, docs/d3d12.md); the fixed-point path never drops");
+    if (stats.size() > kStatFixedPointScale && stats[kStatSaturatedAdds] > 0) {
+        float scale = 0.0f;
+        std::memcpy(&scale, &stats[kStatFixedPointScale], 4);
+        char limit[32];
+        std::snprintf(limit, sizeof(limit), "%.3g", scale > 0.0f ? (scale > 1e10f ? 1.8e19 : 4.29e9) / scale : 0.0);
+        warnings.push_back(std::to_string(stats[kStatSaturatedAdds]) +
+                           " fixed-point caustic radiance adds saturated (pixels clipped at " + limit +
+                           " cd/m^2 this frame): the pre-exposure (CausticsSettings::exposure x Scene::exposure) is "
+                           "too high for this light; lower it (docs/caustics.md, \"Fixed point\")");
+    }
     if (stats.size() > kStatSphereCapacity && stats[kStatSpheresDropped] > 0)
         warnings.push_back(std::to_string(stats[kStatSpheresDropped]) +
                            " second-type spheres dropped this frame, the sphere TLAS grows next frame: " +

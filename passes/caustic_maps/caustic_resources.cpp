@@ -3,6 +3,8 @@
 #include "caustic_maps/caustic_internal.h"
 
 #include "caustics/pass_shaders.h"
+#include "caustics/sphere_capacity.h"
+#include <algorithm>
 #include <cstring>
 
 #include "caustics/rhi/log.h"
@@ -70,7 +72,9 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     Impl& m = *r.impl_;
     m.device = &d;
     m.frameSets.resize(framesInFlight);
+    m.retiredSphereTlas.resize(framesInFlight);
     m.floatAtomics = d.capabilities().shaderFloatAtomicAdd;
+    m.int64Atomics = d.capabilities().shaderBufferInt64Atomics;
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
                TX = BindingType::SampledTexture, AS = BindingType::AccelStruct;
     CAUSTICS_TRY(m.mapLayout, makeBindingLayout(d, {{0, RO}}));
@@ -92,8 +96,10 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     CAUSTICS_TRY(auto rgen, pass_shaders::shaderLibrary(d.backend(), "backward_trace/gather.rgen", "rayGen", ShaderStage::RayGen));
     CAUSTICS_TRY(auto miss, pass_shaders::shaderLibrary(d.backend(), "backward_trace/gather.rmiss", "miss", ShaderStage::Miss));
     CAUSTICS_TRY(auto isect, pass_shaders::shaderLibrary(d.backend(), "backward_trace/sphere.rint", "sphere", ShaderStage::Intersection));
-    CAUSTICS_TRY(auto ahit, pass_shaders::shaderLibrary(d.backend(), m.floatAtomics ? "backward_trace/gather.rahit" : "backward_trace/gather_fixed.rahit",
-                                    "gather", ShaderStage::AnyHit));
+    const char* gatherAnyHit = m.floatAtomics   ? "backward_trace/gather.rahit"
+                               : m.int64Atomics ? "backward_trace/gather_fixed64.rahit"
+                                                : "backward_trace/gather_fixed.rahit";
+    CAUSTICS_TRY(auto ahit, pass_shaders::shaderLibrary(d.backend(), gatherAnyHit, "gather", ShaderStage::AnyHit));
     g.libraries = {rgen, miss, isect, ahit};
     g.hitGroups.push_back({"spheres", rhi::HitGroupType::Procedural, "", "gather", "sphere"});
     g.maxPayloadBytes = 4;
@@ -140,7 +146,10 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     gp.debugName = "caustics.maps";
     CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
     CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout}, 8));
-    CAUSTICS_CHECK(sceneTraceState(d, floatAtomics ? "forward_trace/forward.rgen" : "forward_trace/forward_fixed.rgen",
+    const char* forward = floatAtomics   ? "forward_trace/forward.rgen"
+                          : int64Atomics ? "forward_trace/forward_fixed64.rgen"
+                                         : "forward_trace/forward_fixed.rgen";
+    CAUSTICS_CHECK(sceneTraceState(d, forward,
                                    kForwardPushBytes,
                                    sceneLayout, forwardLayout, forwardState, forwardTable));
     CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", kBackwardPushBytes, sceneLayout, backwardLayout, backwardState, backwardTable));
@@ -148,17 +157,25 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     return okStatus();
 }
 
-Status CausticResources::Impl::ensureSizeResources(uint32_t width, uint32_t height) {
+Status CausticResources::Impl::ensureSizeResources(uint32_t width, uint32_t height, uint32_t slot) {
     rhi::IDevice& d = *device;
-    uint32_t pixels = width * height;
-    if (tlasCapacity < pixels) {
+    const uint32_t pixels = width * height;
+    // Slots by the counts (caustics/sphere_capacity.h), not one instance per pixel: 2.07 M instances at
+    // 1080p were the largest persistent allocation (docs/caustics.md, "Memory").
+    const uint32_t maxInstances = d.capabilities().maxInstanceCount;
+    uint32_t target = grownSphereAllocation(tlasCapacity, sphereAllocationWanted, pixels);
+    if (maxInstances != 0) target = std::max(tlasCapacity, std::min(target, maxInstances));   // checkDeviceLimits
+    sphereAllocationWanted = 0;
+    if (!sphereTlas || target > tlasCapacity) {
         rhi::AccelStructDesc tlas;
         tlas.isTopLevel = true;
-        tlas.maxInstances = pixels;
+        tlas.maxInstances = target;
         tlas.flags = rhi::AccelBuildFlags::PreferFastBuild;   // rebuilt every frame
         tlas.debugName = "caustics.sphereTlas";
-        CAUSTICS_TRY(sphereTlas, d.createAccelStruct(tlas));
-        tlasCapacity = pixels;
+        CAUSTICS_TRY(rhi::AccelStructHandle grown, d.createAccelStruct(tlas));
+        if (sphereTlas) retiredSphereTlas[slot].push_back(std::move(sphereTlas));
+        sphereTlas = std::move(grown);
+        tlasCapacity = target;
     }
     return okStatus();
 }

@@ -3,6 +3,7 @@
 // (dispatchRaysIndirect; without it, a direct dispatch over forwardLaunchBound whose launches past the
 // last layer's range idle). forward.rgen emits, traces the specular chain, splats first-type caustics
 // atomically and stores the diffuse hits.
+#include <algorithm>
 #include <cmath>
 
 #include "caustic_maps/caustic_internal.h"
@@ -24,8 +25,12 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
         f.layerPlans = b.write(f.layerPlans, rg::Access::StorageReadWrite);
         f.owners = b.read(f.owners, rg::Access::SampledRead);
+        // Only the second type's gather reads the hits: without it the pass stores none, into a
+        // one-record buffer the binding needs (docs/caustics.md, "Memory"), and exports no hit buffer.
+        const bool storeHits = s.secondType;
+        const uint32_t maxStoredHits = storeHits ? s.maxStoredHits : 0u;
         f.hits = b.write(b.createBuffer("caustics.hits", rhi::BufferDesc()
-                                                             .setByteSize(uint64_t(s.maxStoredHits) * sizeof(CausticHit))
+                                                             .setByteSize(uint64_t(std::max(maxStoredHits, 1u)) * sizeof(CausticHit))
                                                              .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::CopySource)
                                                              .setDebugName("caustics.hits")),
                          rg::Access::StorageWrite);
@@ -34,7 +39,7 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
             uint32_t mapSize, layers, instanceCount;
             uint32_t maxDepth, frame, flags, maxStoredHits, pad;
         } push{s.mapResolution, layers, f.plan.instanceCount, s.maxSpecularDepth,
-               f.in->frameIndex * 0x9E3779B9u + s.seed, s.russianRoulette ? 1u : 0u, s.maxStoredHits, 0};
+               f.in->frameIndex * 0x9E3779B9u + s.seed, s.russianRoulette ? 1u : 0u, maxStoredHits, 0};
         static_assert(sizeof(Push) == kForwardPushBytes);
         const uint64_t directLaunches = forwardLaunchBound(s, f.plan);
         CausticFrame h = f;

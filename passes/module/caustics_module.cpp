@@ -203,6 +203,8 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         } else {
             m.photonBudget.reset();
         }
+        // Separate first/second-type buffers only for the AOVs that show one (docs/caustics.md "Memory").
+        ci.separateTypes = m.settings.aov == CausticsAov::FirstType || m.settings.aov == CausticsAov::SecondType;
         CAUSTICS_TRY(CausticOutputs co, addCausticPasses(graph, m.caustics, ci));
         if (m.photonBudget && !co.plan.maps.empty()) m.photonBudget->planFrame();   // this frame has a forward pass
         out.caustics = co.radiance;

@@ -6,7 +6,14 @@
 
 namespace caustics {
 
-const char* memoryKindName(MemoryKind kind) { return kind == MemoryKind::Persistent ? "persistent" : "transient"; }
+const char* memoryKindName(MemoryKind kind) {
+    switch (kind) {
+        case MemoryKind::Persistent: return "persistent";
+        case MemoryKind::Transient: return "transient";
+        case MemoryKind::FramePeak: return "peak";
+    }
+    return "?";
+}
 
 uint64_t textureBytes(const rhi::TextureDesc& desc) {
     const uint64_t texel = rhi::formatInfo(desc.format).bytesPerPixel;
@@ -35,6 +42,31 @@ void addMemoryEntry(std::vector<MemoryEntry>& out, std::string name, const rhi::
 uint64_t totalBytes(const std::vector<MemoryEntry>& entries) {
     uint64_t sum = 0;
     for (const MemoryEntry& e : entries) sum += e.bytes;
+    return sum;
+}
+
+}  // namespace caustics
+
+namespace caustics {
+
+void appendFrameMemory(const rg::RenderGraph& graph, std::vector<MemoryEntry>& out) {
+    const rg::CompiledPlan* plan = graph.plan();
+    if (!plan) return;
+    const auto& resources = graph.desc().resources;
+    for (uint32_t i = 0; i < resources.size() && i < plan->heapOffset.size(); ++i)
+        if (plan->heapOffset[i] && i < plan->memory.size())
+            out.push_back({resources[i].name, plan->memory[i].size, MemoryKind::Transient});
+    out.push_back({"frame.peak_transients", plan->heapSize, MemoryKind::FramePeak});
+}
+
+bool isHostSceneMemory(const MemoryEntry& e) {
+    return e.kind == MemoryKind::Persistent && e.name.rfind("scene.", 0) == 0 && e.name.rfind("scene.slot", 0) != 0;
+}
+
+uint64_t moduleFrameBytes(const std::vector<MemoryEntry>& entries) {
+    uint64_t sum = 0;
+    for (const MemoryEntry& e : entries)
+        if ((e.kind == MemoryKind::Persistent && !isHostSceneMemory(e)) || e.kind == MemoryKind::FramePeak) sum += e.bytes;
     return sum;
 }
 

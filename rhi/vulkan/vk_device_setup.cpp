@@ -9,10 +9,15 @@ namespace caustics::rhi::vulkan {
 namespace {
 
 // CAUSTICS_FORCE_FIXED_POINT=1 reports no float atomics, so the passes take the fixed-point path that
-// D3D12 always takes; the caustic GPU tests run once more this way (docs/d3d12.md).
+// D3D12 always takes; the caustic GPU tests run once more this way (docs/d3d12.md). =32 also reports
+// no 64-bit integer atomics: the narrow (one uint per channel) fixed-point words.
 bool forceFixedPointAccumulation() {
     const char* v = std::getenv("CAUSTICS_FORCE_FIXED_POINT");
     return v && *v && std::strcmp(v, "0") != 0;
+}
+bool forceNarrowFixedPoint() {
+    const char* v = std::getenv("CAUSTICS_FORCE_FIXED_POINT");
+    return v && std::strcmp(v, "32") == 0;
 }
 
 }  // namespace
@@ -45,6 +50,7 @@ Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts
     caps.rayTracingPipeline = parts.rayTracingPipeline;
     caps.rayQuery = parts.rayQuery;
     caps.shaderFloatAtomicAdd = parts.floatAtomicAdd && !forceFixedPointAccumulation();
+    caps.shaderBufferInt64Atomics = parts.int64Atomics && !forceNarrowFixedPoint();
     caps.rayTracingIndirect = parts.rayTracingPipeline && parts.traceRaysIndirect;
     if (parts.rayTracingPipeline) {
         const auto& rp = context.rayTracingProperties;

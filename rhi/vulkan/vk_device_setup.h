@@ -13,6 +13,7 @@ struct EnabledDeviceParts {
     bool rayQuery = false;
     bool floatAtomicAdd = false;   // buffer and image float32 atomicAdd
     bool traceRaysIndirect = false;   // rayTracingPipelineTraceRaysIndirect
+    bool int64Atomics = false;     // shaderInt64 + shaderBufferInt64Atomics (Vulkan 1.2 core)
 };
 
 // Needs context.physicalDevice, device and queue set and context.fn loaded (vk_dispatch.h): the

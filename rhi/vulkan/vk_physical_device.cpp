@@ -175,6 +175,7 @@ Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc) {
     e.v12.vulkanMemoryModel = s.v12.vulkanMemoryModel;
     e.v12.vulkanMemoryModelDeviceScope = s.v12.vulkanMemoryModelDeviceScope;
     e.v12.shaderInt8 = s.v12.shaderInt8;
+    e.v12.shaderBufferInt64Atomics = s.v12.shaderBufferInt64Atomics && s.base.features.shaderInt64;
     e.v12.storageBuffer8BitAccess = s.v12.storageBuffer8BitAccess;
     e.v13.dynamicRendering = VK_TRUE;
     e.v13.synchronization2 = VK_TRUE;
@@ -209,7 +210,8 @@ Status createLogicalDevice(VulkanContext& context, const DeviceDesc& desc) {
     return finishDeviceSetup(context, {asExt, rtExt, rayQuery,
                                        atomicFloat && s.atomicFloat.shaderBufferFloat32AtomicAdd &&
                                            s.atomicFloat.shaderImageFloat32AtomicAdd,
-                                       rtExt && s.rt.rayTracingPipelineTraceRaysIndirect});
+                                       rtExt && s.rt.rayTracingPipelineTraceRaysIndirect,
+                                       s.v12.shaderBufferInt64Atomics && s.base.features.shaderInt64});
 }
 
 }  // namespace caustics::rhi::vulkan

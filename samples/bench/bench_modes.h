@@ -21,5 +21,6 @@ int runFrameMode(const BenchOptions& options);
 int runSweepMode(const BenchOptions& options);
 int runFiguresMode(const BenchOptions& options);
 int runLevelMode(const BenchOptions& options);
+int runMemoryMode(const BenchOptions& options);
 
 }  // namespace caustics::bench

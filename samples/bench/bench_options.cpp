@@ -123,7 +123,7 @@ std::string benchUsage() {
         "  --map-size N                caustic map side, 1 .. 8192 (default 512)\n"
         "  --filter on|off             caustic filter (default off, as the paper measured)\n"
         "  --map-occluders on|off      caustic maps also draw occluders (default off: specular objects only)\n"
-        "  --out DIR                   sweep, figures: folder for the CSV / PFM files (created)\n"
+        "  --out DIR                   sweep, figures, memory: folder for the CSV / PFM files (created)\n"
         "  --reference-frames N        sweep: frames of 16 rays per texel in the quality reference (default 16)\n"
         "  --sweeps LIST               sweep: any of lights,rays,depth,map,image (default all)\n"
         "  --photons N                 photons per frame split over the layers in view (0 .. 2^28; 0: per texel)\n"

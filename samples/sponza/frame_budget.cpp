@@ -1,5 +1,7 @@
 #include "frame_budget.h"
 
+#include "caustics/sphere_capacity.h"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -86,11 +88,14 @@ uint64_t FrameMemory::persistentBytes(rhi::IDevice& device, uint32_t width, uint
     if (s.causticsEnabled && s.filter)   // the view's filter history (caustic_resources.cpp ensureHistory)
         bytes += 2 * texture(rhi::Format::RGBA32_FLOAT) + texture(rhi::Format::R32_FLOAT) +
                  texture(rhi::Format::RGBA16_FLOAT) + texture(rhi::Format::R32_UINT);
-    if (s.causticsEnabled && s.secondType) bytes += kSphereInstanceBytes * width * height;
+    // The sphere TLAS's first allocation at this size (caustics/sphere_capacity.h; it grows with the counts).
+    if (s.causticsEnabled && s.secondType) bytes += kSphereInstanceBytes * initialSphereAllocation(width * height);
     return bytes;
 }
 
 uint64_t FrameMemory::heapBytes(uint32_t width, uint32_t height) const {
+    // Linear: past kMinSphereAllocation pixels the sphere list and instances stop growing per pixel
+    // (caustics/sphere_capacity.h), so this over-estimates there, on the safe side for a refusal.
     return uint64_t(std::ceil(double(fixedBytes) + heapBytesPerPixel * double(width) * double(height)));
 }
 
@@ -115,6 +120,22 @@ Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& mod
                 m.largestFixedBytes = bytes;
             }
     return m;
+}
+
+Result<std::vector<MemoryEntry>> moduleFrameReport(rhi::IDevice& device, CausticsModule& module, uint32_t width,
+                                                   uint32_t height) {
+    rg::RenderGraph graph;
+    FrameInputs in;
+    in.camera = cameraViewMatrices(scene::Camera{}, width, height);
+    in.width = width;
+    in.height = height;
+    CAUSTICS_TRY(FrameOutputs out, module.addPasses(graph, in));
+    graph.markOutput(out.display, rhi::ResourceState::CopySource);
+    graph.markOutput(out.hdr, rhi::ResourceState::CopySource);
+    CAUSTICS_CHECK(graph.compile(rg::DeviceMemorySizer(device)));
+    std::vector<MemoryEntry> report = module.memoryReport();
+    appendFrameMemory(graph, report);
+    return report;
 }
 
 Result<FrameMemory> checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {

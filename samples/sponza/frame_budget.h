@@ -18,7 +18,7 @@ struct FrameMemory {
     uint64_t fixedBytes = 0;          // transient heap at zero pixels: caustic maps, hit buffer, ...
     double heapBytesPerPixel = 0.0;   // transient heap growth per pixel: G-buffer, direct, caustic images, ...
     std::string largestFixed;         // the largest transient whose size does not depend on the pixels
-    uint64_t largestFixedBytes = 0;   // (the hit buffer: CausticsSettings::maxStoredHits x 80 bytes)
+    uint64_t largestFixedBytes = 0;   // (the hit buffer: CausticsSettings::maxStoredHits x 64 bytes)
     uint64_t heapBytes(uint32_t width, uint32_t height) const;
     // Per frame size, from the device's memory requirements of the persistent and read-back resources.
     uint64_t persistentBytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const;
@@ -29,6 +29,13 @@ struct FrameMemory {
 // requirements, never executed: the module commits nothing) and fits the transient heap's size, which
 // the graph's aliasing makes linear in the pixel count (docs/viewer.md "Device limits").
 Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& module);
+
+// What the module holds for one frame at width x height (docs/caustics.md "Memory"): its memory report
+// after building and compiling its frame graph at that size (never executed), with the graph's
+// transients and "peak in one frame" line (appendFrameMemory). For the `frame memory` line, after
+// checkFrameFitsDevice said the frame fits.
+Result<std::vector<MemoryEntry>> moduleFrameReport(rhi::IDevice& device, CausticsModule& module, uint32_t width,
+                                                   uint32_t height);
 
 // checkFrameSize, then the measured frame: the transient heap (one allocation) against the largest
 // allocation, and the whole frame against the device-local heap. Errors name the size and the limit.

@@ -176,9 +176,22 @@ int run(const sample::CliOptions& o) {
         std::fprintf(stderr, "caustics-sponza: %s\n", memory.message().c_str());
         return 1;
     }
-    std::printf("frame memory: %.1f MiB for %ux%u (render-graph transient heap %.1f MiB + %.0f bytes/pixel, measured)\n",
-                double(memory->bytes(**device, o.width, o.height, (*module)->settings())) / 1048576.0, o.width, o.height,
-                double(memory->fixedBytes) / 1048576.0, memory->heapBytesPerPixel);
+    // Everything the module holds in one frame, from its frame graph built and sized at this size.
+    auto report = sample::moduleFrameReport(**device, **module, o.width, o.height);
+    if (!report) {
+        std::fprintf(stderr, "caustics-sponza: %s\n", report.message().c_str());
+        return 1;
+    }
+    uint64_t peak = 0, sceneBytes = 0;
+    for (const MemoryEntry& e : *report) {
+        if (e.kind == MemoryKind::FramePeak) peak += e.bytes;
+        if (isHostSceneMemory(e)) sceneBytes += e.bytes;
+    }
+    const uint64_t held = moduleFrameBytes(*report);
+    std::printf("frame memory: %.1f MiB for %ux%u: the module holds %.1f MiB (persistent %.1f + peak transient %.1f, "
+                "from its frame graph), the scene %.1f MiB\n",
+                double(held + sceneBytes) / 1048576.0, o.width, o.height, double(held) / 1048576.0,
+                double(held - peak) / 1048576.0, double(peak) / 1048576.0, double(sceneBytes) / 1048576.0);
     if (o.window) return sample::runViewer(*device, scene, *gpuScene, *module, o, script);
 
     auto renderer = sample::FrameRenderer::create(*device, **module, o.width, o.height);

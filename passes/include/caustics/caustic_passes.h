@@ -60,24 +60,33 @@ inline constexpr uint32_t kStatSpecularPixels = kStatForwardSegments + 5;
 inline constexpr uint32_t kStatBackwardLaunches = kStatForwardSegments + 6;
 inline constexpr uint32_t kStatSpheresDropped = kStatForwardSegments + 7;
 inline constexpr uint32_t kStatSphereCapacity = kStatForwardSegments + 8;
-inline constexpr uint32_t kStatCount = kStatSphereCapacity + 1;
+// Fixed-point accumulation (docs/caustics.md, "Fixed point"): adds that pinned a radiance word at its
+// maximum (causticStatsWarnings names the exposure), and the frame's scale (float bits, written by
+// caustics.setup: the fixed-point word is value x this). Always 0 on the float path.
+inline constexpr uint32_t kStatSaturatedAdds = kStatForwardSegments + 9;
+inline constexpr uint32_t kStatFixedPointScale = kStatForwardSegments + 10;
+inline constexpr uint32_t kStatCount = kStatFixedPointScale + 1;
 
-// One stored forward diffuse hit (std430, 80 bytes; GLSL mirror in forward_trace/caustic_hit.glsl).
-// It carries the photon's flux, its incoming direction and the receiver's glTF BRDF parameters, so a
-// gather evaluates the same BRDF as the splat and direct lighting (shaders/common/bsdf.h).
+// One stored forward diffuse hit (std430, 64 bytes; GLSL mirror CausticHitRecord in
+// forward_trace/caustic_hit.glsl). It carries the photon's flux, its incoming direction and the
+// receiver's glTF BRDF parameters, so a gather evaluates the same BRDF as the splat and direct
+// lighting (shaders/common/bsdf.h). The two directions are octahedral snorm16 x 2 (80 -> 64 bytes,
+// docs/caustics.md "Memory"); causticHitNormal / causticHitIncoming decode them.
 struct CausticHit {
     glm::vec3 position;
     uint32_t objectId;           // instance index + 1
-    glm::vec3 normal;            // unit shading normal, on the side the photon arrived from
-    uint32_t light;
     glm::vec3 flux;              // photon flux, lm per channel
-    uint32_t metallicRoughness;  // unorm16 x 2: metallic (low half), roughness (high half)
-    glm::vec3 incoming;          // unit, from the hit back along the photon's last segment (wi)
-    float transmission;
+    uint32_t light;
     glm::vec3 baseColor;         // linear; a specular material's diffuse layer stores dielectricF0 = 0
     float dielectricF0;
+    uint32_t normal;             // unit shading normal on the side the photon arrived from (octahedral)
+    uint32_t incoming;           // unit, from the hit back along the photon's last segment (wi; octahedral)
+    uint32_t metallicRoughness;  // unorm16 x 2: metallic (low half), roughness (high half)
+    float transmission;
 };
-static_assert(sizeof(CausticHit) == 80);
+static_assert(sizeof(CausticHit) == 64);
+glm::vec3 causticHitNormal(const CausticHit& hit);
+glm::vec3 causticHitIncoming(const CausticHit& hit);
 
 // One backward (second-type) integration sphere (std430, 64 bytes), appended by caustics.backward: the
 // first min(kStatSpheres, kStatSphereCapacity) entries of CausticOutputs::spheres are valid.
@@ -149,27 +158,41 @@ struct CausticFrameInputs {
     // This frame's photon budget when the module steers it (CausticsSettings::causticTimeTargetMs);
     // none: settings.photonsPerFrame.
     std::optional<uint32_t> photonsPerFrame;
+    // Separate first- and second-type buffers and textures (CausticOutputs::firstType, secondType), for
+    // an AOV or a test that shows one type. false: both types accumulate into one buffer and resolve
+    // to CausticOutputs::radiance alone (docs/caustics.md, "Memory"; CausticsModule asks for the
+    // separate ones only for the FirstType / SecondType AOVs).
+    bool separateTypes = true;
 };
 
 struct CausticOutputs {
     rg::RgTexture radiance;     // RGBA32F W x H, first + second type, filtered when settings.filter
-    rg::RgTexture firstType;    // RGBA32F, unfiltered
-    rg::RgTexture secondType;   // RGBA32F, unfiltered (black when settings.secondType is off)
-    rg::RgBuffer firstTypeBuffer;   // float or fixed-point (CausticMapPlan::fixedPointScale) RGB per pixel
-    rg::RgBuffer secondTypeBuffer;
-    rg::RgBuffer hits;          // CausticHit[maxStoredHits]
+    rg::RgTexture firstType;    // RGBA32F, unfiltered (invalid unless separateTypes)
+    rg::RgTexture secondType;   // RGBA32F, unfiltered (black when settings.secondType is off; invalid unless separateTypes)
+    rg::RgBuffer firstTypeBuffer;   // float or fixed-point RGB per pixel (both types unless separateTypes)
+    rg::RgBuffer secondTypeBuffer;  // invalid unless separateTypes
+    rg::RgBuffer hits;          // CausticHit[maxStoredHits]; invalid when settings.secondType is off (none stored)
     rg::RgBuffer stats;         // uint32[kStatCount]
     rg::RgBuffer layerPlans;    // CausticLayerPlanGpu per plan.maps entry (invalid without maps)
     rg::RgBuffer spheres;       // CausticSphere[W x H], the first min(kStatSpheres, kStatSphereCapacity)
                                 // valid (invalid when the second type did not run)
     rg::RgTexture mapObjectIds; // R32_UINT array, one layer per planned map (instance + 1; invalid if none)
     CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped
-    bool floatAtomics = true;   // false: the buffers hold fixed-point uint (kFixedPointScale)
+    bool floatAtomics = true;   // false: the buffers hold fixed point, value x fixedPointScale
+    bool wideFixedPoint = false;   // fixed point in one uint64 per channel (else one uint32)
+    float fixedPointScale = 0.0f;  // fixed point only: kFixedPointScale(64) x the frame's pre-exposure
 };
 
-// Radiance values in the fixed-point fallback buffers are round(value * kFixedPointScale) as uint32
-// (cd/m^2 x 2^16: resolution 1.5e-5 cd/m^2, saturation at 65535 cd/m^2 per pixel and frame).
+// Fixed-point radiance words (devices without float atomics; docs/caustics.md "Fixed point") hold
+// value x scale, stochastically rounded, with scale = kFixedPointScale (uint32 words) or
+// kFixedPointScale64 (uint64 words, shaderBufferInt64Atomics) times the frame's pre-exposure
+// (settings.exposure x scene.exposure, what the composite multiplies by): with pre-exposed values near
+// 1 for white, uint32 words resolve 1.5e-5 of white and saturate at 65535 x white per pixel and frame,
+// uint64 words resolve 2.3e-10 and saturate at 4.3e9 x white.
 inline constexpr float kFixedPointScale = 65536.0f;
+inline constexpr float kFixedPointScale64 = 4294967296.0f;
+// The scale of one frame; a non-finite or non-positive pre-exposure counts as 1.
+float fixedPointScale(bool wideWords, float preExposure);
 
 // Upper bound of the forward pass's ray launches for the plan (the device-limit check and the grid of a
 // device without indirect ray dispatch).

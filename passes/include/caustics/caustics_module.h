@@ -68,7 +68,9 @@ struct FrameOutputs {
     rg::RgTexture direct;      // RGBA16_FLOAT direct radiance
     rg::RgTexture caustics;    // RGBA32_FLOAT caustic radiance (cd/m^2), filtered when settings.filter;
                                // invalid when caustics are off or the scene has no light
-    rg::RgTexture firstType, secondType;   // unfiltered caustic components; invalid when off
+    // Unfiltered caustic components, exported for the FirstType / SecondType AOVs (one accumulation
+    // buffer otherwise, docs/caustics.md "Memory"); invalid for other AOVs or when off.
+    rg::RgTexture firstType, secondType;
     GBuffer gbuffer;
     rg::RgBuffer causticStats; // uint32[kStatCount] (caustic_passes.h); causticStatsWarnings() reads it
 };

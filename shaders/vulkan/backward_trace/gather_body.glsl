@@ -5,7 +5,7 @@
 #include "common/lang.h"
 #include "forward_trace/caustic_hit.glsl"
 layout(set = 0, binding = 1, std430) readonly buffer Spheres { CausticSphere spheres[]; };
-layout(set = 0, binding = 2, std430) readonly buffer Hits { CausticHit hits[]; };
+layout(set = 0, binding = 2, std430) readonly buffer Hits { CausticHitRecord hits[]; };
 layout(set = 0, binding = 3, std430) buffer Stats { uint stats[]; };
 #define RADIANCE_SET 0
 #define RADIANCE_BINDING 4
@@ -13,7 +13,7 @@ layout(set = 0, binding = 3, std430) buffer Stats { uint stats[]; };
 layout(location = 0) rayPayloadInEXT uint hitIndex;
 void main() {
     CausticSphere s = spheres[gl_InstanceID];
-    CausticHit h = hits[hitIndex];
+    CausticHit h = unpackCausticHit(hits[hitIndex]);
     if (h.objectId == s.objectId && dot(h.normal, s.normal) > 0.0) {
         addRadiance(s.pixel, causticHitReflectedFlux(h, s.outgoing) * s.transmittance / (kPi * s.radius * s.radius));
         atomicAdd(stats[kStatGatherHits], 1u);

@@ -1,8 +1,10 @@
 #ifndef CAUSTICS_CAUSTIC_HIT_GLSL
 #define CAUSTICS_CAUSTIC_HIT_GLSL
-// std430 mirrors of caustics::CausticHit / CausticSphere (passes/include/caustics/caustic_passes.h)
-// and the statistics slots.
+// std430 mirrors of caustics::CausticHit (the 64-byte CausticHitRecord here) / CausticSphere
+// (passes/include/caustics/caustic_passes.h) and the statistics slots. Shaders work on the unpacked
+// CausticHit; the buffer holds records (packCausticHit / unpackCausticHit).
 #include "common/bsdf.h"
+#include "common/octahedral.h"
 struct CausticHit {
     vec3 position;  uint objectId;
     vec3 normal;    uint light;              // normal: unit, on the side the photon arrived from
@@ -10,6 +12,43 @@ struct CausticHit {
     vec3 incoming;  float transmission;      // incoming: unit, back along the photon's last segment
     vec3 baseColor; float dielectricF0;
 };
+struct CausticHitRecord {
+    vec3 position;  uint objectId;
+    vec3 flux;      uint light;
+    vec3 baseColor; float dielectricF0;
+    uint normal;    uint incoming;           // octahedral snorm16 x 2 (common/octahedral.h)
+    uint metallicRoughness; float transmission;
+};
+
+CausticHitRecord packCausticHit(CausticHit h) {
+    CausticHitRecord r;
+    r.position = h.position;
+    r.objectId = h.objectId;
+    r.flux = h.flux;
+    r.light = h.light;
+    r.baseColor = h.baseColor;
+    r.dielectricF0 = h.dielectricF0;
+    r.normal = packSnorm2x16(octEncode(h.normal));
+    r.incoming = packSnorm2x16(octEncode(h.incoming));
+    r.metallicRoughness = h.metallicRoughness;
+    r.transmission = h.transmission;
+    return r;
+}
+
+CausticHit unpackCausticHit(CausticHitRecord r) {
+    CausticHit h;
+    h.position = r.position;
+    h.objectId = r.objectId;
+    h.normal = octDecode(unpackSnorm2x16(r.normal));
+    h.light = r.light;
+    h.flux = r.flux;
+    h.metallicRoughness = r.metallicRoughness;
+    h.incoming = octDecode(unpackSnorm2x16(r.incoming));
+    h.transmission = r.transmission;
+    h.baseColor = r.baseColor;
+    h.dielectricF0 = r.dielectricF0;
+    return h;
+}
 
 CausticHit makeCausticHit(vec3 position, uint objectId, vec3 normal, uint light, vec3 flux, vec3 incoming,
                           BrdfMaterial m) {
@@ -49,6 +88,8 @@ const uint kStatGatherHits = 2u;
 const uint kStatSpheres = 3u;
 const uint kStatRaysPerLight = 4u;
 const uint kStatAccumulationGiveUps = 68u;   // kStatForwardSegments + 4 (caustic_passes.h); only HLSL's CAS loop counts
+const uint kStatSaturatedAdds = 73u;         // fixed-point adds that pinned a word at its maximum
+const uint kStatFixedPointScale = 74u;       // float bits: value x this = fixed-point word (written by the host)
 
 // Closest-hit payload of trace.rchit / trace.rmiss: t < 0 = miss.
 struct TracePayload {

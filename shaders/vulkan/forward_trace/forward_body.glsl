@@ -19,7 +19,7 @@ layout(set = 1, binding = 1, std430) readonly buffer Maps { CausticMap maps[]; }
 layout(set = 1, binding = 2, std430) readonly buffer Emitters { uint emitters[]; };
 layout(set = 1, binding = 3) uniform texture2D gLinearDepth;
 layout(set = 1, binding = 4) uniform utexture2D gObjectId;
-layout(set = 1, binding = 6, std430) buffer Hits { CausticHit hits[]; };
+layout(set = 1, binding = 6, std430) buffer Hits { CausticHitRecord hits[]; };
 layout(set = 1, binding = 7, std430) buffer Stats { uint stats[]; };
 layout(set = 1, binding = 8, std430) buffer Plans { CausticLayerPlan plans[]; };
 layout(set = 1, binding = 9, std430) readonly buffer Owners { uint owners[]; };
@@ -164,7 +164,7 @@ void main() {
         if (max(flux.x, max(flux.y, flux.z)) <= 0.0) break;
         CausticHit hit = makeCausticHit(x, h.objectId, nFacing, m.light, flux, -dir, receiverBrdfMaterial(h));
         uint slot = atomicAdd(stats[kStatStoredHitAttempts], 1u);
-        if (slot < pc.maxStoredHits) hits[slot] = hit;
+        if (slot < pc.maxStoredHits) hits[slot] = packCausticHit(hit);
         splatFirstType(hit);
         break;
     }

@@ -15,11 +15,12 @@
 namespace caustics::test {
 namespace {
 
-// flux x f_r of a stored hit towards wo, from the hit's fields (forward_trace/caustic_hit.glsl).
+// flux x f_r of a stored hit towards wo, from the hit's fields (forward_trace/caustic_hit.glsl; the
+// directions decoded from their octahedral words as the gather decodes them).
 glm::vec3 reflectedFlux(const CausticHit& h, const glm::vec3& wo) {
     glm::vec2 mr = glm::unpackUnorm2x16(h.metallicRoughness);
     auto brdf = shader::makeBrdfMaterial(h.baseColor, mr.x, mr.y, h.transmission, h.dielectricF0);
-    return h.flux * shader::evalGltfBrdf(brdf, h.normal, h.incoming, wo);
+    return h.flux * shader::evalGltfBrdf(brdf, causticHitNormal(h), causticHitIncoming(h), wo);
 }
 
 class CausticGather : public GpuTest {};
@@ -41,7 +42,7 @@ TEST_F(CausticGather, SecondTypeEqualsCpuBruteForceGatherOnTheSameHitsAndSpheres
             // The disk test sphere.rint evaluates (common/gather_disk.h); points within 1e-6 of the
             // boundary could round either way, and are rare enough (measure zero) not to matter here.
             if (!shader::insideGatherDisk(h.position, s.centre, s.normal, s.radius)) continue;
-            if (h.objectId != s.objectId || glm::dot(h.normal, s.normal) <= 0.0f) continue;
+            if (h.objectId != s.objectId || glm::dot(causticHitNormal(h), s.normal) <= 0.0f) continue;
             expected[s.pixel] += glm::dvec3(reflectedFlux(h, s.outgoing) * s.transmittance) / (3.14159265358979 * s.radius * s.radius);
             ++pairs;
         }
@@ -75,7 +76,7 @@ TEST_F(CausticGather, HitBufferOverflowIsCountedAndReportedNotACrash) {
     for (const CausticHit& h : r.hits) {
         EXPECT_NE(h.objectId, 0u);
         EXPECT_TRUE(std::isfinite(h.flux.x) && h.flux.x >= 0.0f);
-        EXPECT_NEAR(glm::length(h.incoming), 1.0f, 1e-4f);
+        EXPECT_NEAR(glm::length(causticHitIncoming(h)), 1.0f, 1e-4f);
     }
     for (const glm::vec3& v : r.secondType) ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
 }

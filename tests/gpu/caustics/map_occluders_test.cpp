@@ -55,7 +55,7 @@ class MapOccluders : public GpuTest {};
 TEST_F(MapOccluders, WithAndWithoutOccludersTheCausticEnergyIsTheSameAndTheShadedFloorIsDark) {
     const scene::Scene scene = shadedSlabScene();
     CausticsSettings s = smallSettings();
-    s.secondType = false;
+    s.secondType = true;   // the forward pass stores its diffuse hits only for the second type's gather
     s.mapOccluders = true;
     auto with = runCaustics(*device, scene, underSlabCamera(), 64, 64, s);
     s.mapOccluders = false;

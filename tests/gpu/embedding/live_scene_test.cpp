@@ -27,6 +27,7 @@ CausticsSettings firstTypeSettings() {
     s.secondType = false;
     s.russianRoulette = false;
     s.maxStoredHits = 1u << 12;
+    s.aov = CausticsAov::FirstType;   // the module exports the first-type image for that AOV only
     return s;
 }
 

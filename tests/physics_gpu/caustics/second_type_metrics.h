@@ -42,7 +42,7 @@ inline CausticsSettings secondTypeSettings(uint32_t map, float rays) {
     s.filter = false;
     s.maxSpecularDepth = 8;
     s.russianRoulette = false;
-    s.maxStoredHits = 1u << 20;   // 80 MB of CausticHit: under lavapipe's 128 MB storage-buffer range
+    s.maxStoredHits = 1u << 20;   // 64 MB of CausticHit: under lavapipe's 128 MB storage-buffer range
     return s;
 }
 

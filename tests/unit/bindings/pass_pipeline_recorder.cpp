@@ -91,10 +91,11 @@ std::vector<rhi::BindingLayoutDesc> layoutDescs(const rhi::PipelineBindings& b) 
 
 class RecordingDevice final : public rhi::IDevice {
 public:
-    explicit RecordingDevice(bool floatAtomics) {
+    RecordingDevice(bool floatAtomics, bool int64Atomics) {
         caps_.adapterName = "binding recorder";
         caps_.rayTracingPipeline = caps_.accelerationStructure = true;
         caps_.shaderFloatAtomicAdd = floatAtomics;
+        caps_.shaderBufferInt64Atomics = int64Atomics;
         caps_.maxRayRecursionDepth = 31;
         caps_.maxInstanceCount = 1u << 24;
     }
@@ -197,7 +198,7 @@ private:
 }  // namespace
 
 Result<std::vector<RecordedPipeline>> recordPassPipelines(const PassPipelineOptions& options) {
-    auto device = std::make_shared<RecordingDevice>(options.floatAtomics);
+    auto device = std::make_shared<RecordingDevice>(options.floatAtomics, options.int64Atomics);
     // The smallest scene SceneBindings accepts: one instance, a TLAS and one texture.
     scene::Scene scene;
     scene.name = "binding recorder";

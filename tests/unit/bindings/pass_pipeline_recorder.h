@@ -37,6 +37,7 @@ struct RecordedPipeline {
 
 struct PassPipelineOptions {
     bool floatAtomics = true;   // Capabilities::shaderFloatAtomicAdd: picks the float or fixed-point shaders
+    bool int64Atomics = false;  // Capabilities::shaderBufferInt64Atomics: the fixed-point shaders' 64-bit words
 };
 
 // Creates every pass of the module (scene bindings, G-buffer, direct lighting, composite, caustic

@@ -1,6 +1,7 @@
 // The sphere TLAS capacity policy (caustics/sphere_capacity.h): W x H without an earlier count, else the
 // earlier count with 1.25 x headroom rounded up to an eighth of a power of two, within
-// [kMinSphereCapacity, W x H]; 0 after a frame without spheres.
+// [kMinSphereCapacity, W x H]; 0 after a frame without spheres. The allocation the capacity is clamped
+// to: a sixteenth of the pixels (at least 131,072, at most W x H), grown to what a frame asked for.
 #include <gtest/gtest.h>
 
 #include "caustics/sphere_capacity.h"
@@ -38,6 +39,24 @@ TEST(SphereCapacity, ClampedToTheSmallestCapacityAndToEveryPixel) {
 // A frame without spheres: the next frame of the slot builds and gathers nothing.
 TEST(SphereCapacity, NoEarlierSphereMeansNoBuild) {
     EXPECT_EQ(sphereTlasCapacity(0u, kPixels), 0u);
+}
+
+TEST(SphereAllocation, FirstAllocationIsASixteenthOfThePixelsWithAFloor) {
+    EXPECT_EQ(initialSphereAllocation(kPixels), kMinSphereAllocation);   // 129,600 at 1080p, under the floor
+    EXPECT_EQ(initialSphereAllocation(3840u * 2160u), 3840u * 2160u / 16);
+    EXPECT_EQ(initialSphereAllocation(640u * 480u), kMinSphereAllocation);
+    EXPECT_EQ(initialSphereAllocation(320u * 240u), 320u * 240u) << "small images keep a slot per pixel";
+}
+
+TEST(SphereAllocation, GrowsToTheCapacityAFrameAskedForNeverShrinks) {
+    const uint32_t first = initialSphereAllocation(kPixels);
+    EXPECT_EQ(grownSphereAllocation(first, 0u, kPixels), first);
+    const uint32_t wanted = sphereTlasCapacity(400000u, kPixels);
+    EXPECT_EQ(grownSphereAllocation(first, wanted, kPixels), wanted);
+    EXPECT_EQ(grownSphereAllocation(wanted, 1000u, kPixels), wanted) << "never shrinks";
+    EXPECT_EQ(grownSphereAllocation(first, 2 * kPixels, kPixels), kPixels) << "at most W x H";
+    // A smaller view sharing it keeps the larger allocation.
+    EXPECT_EQ(grownSphereAllocation(wanted, 0u, 64u * 48u), wanted);
 }
 
 }  // namespace

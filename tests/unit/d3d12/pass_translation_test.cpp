@@ -20,8 +20,9 @@ using test::RecordedPipeline;
 
 std::vector<RecordedPipeline> everyPassPipeline() {
     std::vector<RecordedPipeline> all;
-    for (bool floatAtomics : {true, false}) {
-        auto recorded = test::recordPassPipelines({floatAtomics});
+    // Float atomics; fixed point in uint32 words; fixed point in uint64 words (docs/caustics.md "Fixed point").
+    for (auto [floatAtomics, int64Atomics] : {std::pair{true, false}, std::pair{false, false}, std::pair{false, true}}) {
+        auto recorded = test::recordPassPipelines({floatAtomics, int64Atomics});
         EXPECT_TRUE(recorded.ok()) << (recorded.ok() ? "" : recorded.message());
         if (recorded.ok()) all.insert(all.end(), recorded.value().begin(), recorded.value().end());
     }

@@ -38,6 +38,9 @@ struct Capabilities {
     bool accelerationStructure = false;
     bool rayQuery = false;
     bool shaderFloatAtomicAdd = false;   // atomicAdd on float storage buffers and images
+    // 64-bit integer atomics on storage buffers (Vulkan shaderBufferInt64Atomics + shaderInt64; D3D12:
+    // SM 6.6 InterlockedAdd64, not yet reported there): the caustic fixed-point path's wide words.
+    bool shaderBufferInt64Atomics = false;
     bool rayTracingIndirect = false;     // ICommandList::dispatchRaysIndirect
     uint32_t shaderGroupHandleSize = 32;
     uint32_t shaderGroupHandleAlignment = 32;
