@@ -31,6 +31,8 @@ void appendHistoryMemory(const CausticViewHistory& history, const std::string& p
     addMemoryEntry(out, prefix + ".depth", history.depth);
     addMemoryEntry(out, prefix + ".normal", history.normal);
     addMemoryEntry(out, prefix + ".object_id", history.objectId);
+    addMemoryEntry(out, prefix + ".tiles0", history.tiles[0]);
+    addMemoryEntry(out, prefix + ".tiles1", history.tiles[1]);
 }
 
 }  // namespace caustics

@@ -172,6 +172,16 @@ Status CausticResources::Impl::ensureHistory(CausticViewHistory& h, uint32_t wid
     CAUSTICS_TRY(h.depth, make(rhi::Format::R32_FLOAT, "caustics.historyDepth"));
     CAUSTICS_TRY(h.normal, make(rhi::Format::RGBA16_FLOAT, "caustics.historyNormal"));
     CAUSTICS_TRY(h.objectId, make(rhi::Format::R32_UINT, "caustics.historyObjectId"));
+    // One texel per 8x8 tile (caustic_filter/caustic_filter_pass.cpp, tiles.comp).
+    auto makeTiles = [&](const char* name) {
+        return device->createTexture(rhi::TextureDesc().setSize((width + 7) / 8, (height + 7) / 8)
+                                         .setFormat(rhi::Format::R32_UINT)
+                                         .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage)
+                                         .setDebugName(name));
+    };
+    CAUSTICS_TRY(h.tiles[0], makeTiles("caustics.historyTiles0"));
+    CAUSTICS_TRY(h.tiles[1], makeTiles("caustics.historyTiles1"));
+    h.tileParity = 0;
     h.width = width;
     h.height = height;
     h.valid = false;

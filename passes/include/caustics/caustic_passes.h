@@ -97,6 +97,11 @@ struct CausticViewHistory {
     rhi::TextureHandle depth;     // R32F linear depth
     rhi::TextureHandle normal;    // RGBA16F
     rhi::TextureHandle objectId;  // R32UI
+    // R32UI per 8x8 pixel tile (docs/caustics.md "Filter", "Tiles"): how many more frames the tile's
+    // history is kept (0: its texels above are stale). Ping-ponged: tiles[tileParity] is last frame's,
+    // read by this frame's caustics.filterTiles, which writes the other.
+    rhi::TextureHandle tiles[2];
+    uint32_t tileParity = 0;
     uint32_t width = 0, height = 0;
     // True once a frame's caustics.history pass has been RECORDED (graph execution), so a graph that is
     // built and never executed does not make the history look valid.
@@ -153,6 +158,7 @@ struct CausticOutputs {
     rg::RgBuffer stats;         // uint32[kStatCount]
     rg::RgBuffer spheres;       // CausticSphere[W x H], the first min(kStatSpheres, kStatSphereCapacity)
                                 // valid (invalid when the second type did not run)
+    rg::RgBuffer filterTiles;   // uint32 (tiles the filter ran on, 1, 1) when settings.filter (docs/caustics.md "Tiles")
     rg::RgTexture mapObjectIds; // R32_UINT array, one layer per planned map (instance + 1; invalid if none)
     CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped
     bool floatAtomics = true;   // false: the buffers hold fixed-point uint (kFixedPointScale)

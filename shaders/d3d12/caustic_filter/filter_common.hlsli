@@ -6,6 +6,17 @@
 // Rec. 709 luminance: the scalar whose moments and differences guide the filter (SVGF section 4.2).
 float filterLuminance(float3 c) { return dot(c, float3(0.2126f, 0.7152f, 0.0722f)); }
 
+// The filter runs over 8x8 pixel tiles (docs/caustics.md "Filter", "Tiles"): tiles.comp lists the tiles
+// that received photons (and their neighbours) or still hold history, packed x | y << 16, and every filter pass is dispatched
+// indirectly, one 8x8 group per listed tile. Neighbourhood reads skip pixels of unlisted tiles.
+static const int kFilterTileSize = 8;
+// Tile state (tiles.comp): frames the tile's history is kept (0: not listed), bit 31: photons this frame.
+static const uint kFilterTilePhotons = 0x80000000u;
+static const uint kFilterTileKeepMask = 0x7FFFFFFFu;
+int2 filterTilePixel(uint tile, uint2 texel) {
+    return int2(int(tile & 0xFFFFu), int(tile >> 16)) * kFilterTileSize + int2(texel);
+}
+
 // B3-spline a-trous kernel taps for |offset| = 0, 1, 2 (1/16 (1 4 6 4 1)).
 static const float kFilterKernel[3] = {3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};
 

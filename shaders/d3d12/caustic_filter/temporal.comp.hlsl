@@ -1,7 +1,8 @@
 // Temporal accumulation (SVGF, Schied et al. 2017, section 4.1; mirror of shaders/vulkan/
 // caustic_filter/temporal.comp): bilinear history taps that pass the disocclusion test (object id,
 // depth, normal), blended with weight 1/n, n = history length capped at maxHistory. prevViewProj is
-// Vulkan's clip (y down) and is used as such: no rasterizer here.
+// Vulkan's clip (y down) and is used as such: no rasterizer here. Dispatched over the tile list; a
+// history texel counts only where last frame's tile state kept it.
 #include "scene/camera.hlsli"
 #include "caustic_filter/filter_common.hlsli"
 struct CameraBlock { CameraConstants camera; };
@@ -17,6 +18,8 @@ Texture2D<float4> historyNormal : register(t8, space0);
 Texture2D<uint> historyObjectId : register(t9, space0);
 RWTexture2D<float4> outColor : register(u10, space0);
 RWTexture2D<float4> outMoments : register(u11, space0);
+ByteAddressBuffer tiles : register(t12, space0);
+Texture2D<uint> previousTiles : register(t13, space0);   // 0: the history texels there are stale
 struct Push { uint historyValid; float maxHistory; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
@@ -32,6 +35,8 @@ static const float kTrustedHistory = 4.0f;   // SVGF's threshold for trusting th
 // has to be guessed). Rejected when |C - H| > 3 sqrt(sum V) + 2 q, q the smallest non-zero luminance of
 // this frame in the 3x3 (one photon): a caustic of ~1 photon per pixel per frame that leaves a pixel
 // is caught in one frame, 3 photons where the history was dark start a new one; stray photons do not.
+bool historyKept(int2 q) { return previousTiles.Load(int3(q / kFilterTileSize, 0)) != 0u; }
+
 bool historyRejected(int2 p, int2 nearest, int2 size, uint id) {
     float c = 0.0f, h = 0.0f, v = 0.0f, quantum = 0.0f;
     for (int dy = -1; dy <= 1; ++dy) {
@@ -39,6 +44,7 @@ bool historyRejected(int2 p, int2 nearest, int2 size, uint id) {
             int2 q = p + int2(dx, dy), hq = nearest + int2(dx, dy);
             if (any(min(q, hq) < int2(0, 0)) || any(max(q, hq) >= size)) continue;
             if (gObjectId.Load(int3(q, 0)) != id || historyObjectId.Load(int3(hq, 0)) != id) continue;
+            if (!historyKept(hq)) continue;
             float l = filterLuminance(current.Load(int3(q, 0)).rgb);
             float3 m = historyMoments.Load(int3(hq, 0)).xyz;
             c += l;
@@ -51,9 +57,9 @@ bool historyRejected(int2 p, int2 nearest, int2 size, uint id) {
 }
 
 [numthreads(8, 8, 1)]
-void main(uint3 tid : SV_DispatchThreadID) {
+void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
     CameraConstants camera = cameraBlock.camera;
-    int2 p = int2(tid.xy);
+    int2 p = filterTilePixel(tiles.Load(4u * group.x), groupThread.xy);
     int2 size = int2(camera.frame.xy);
     if (p.x >= size.x || p.y >= size.y) return;
     float3 cur = current.Load(int3(p, 0)).rgb;
@@ -80,7 +86,7 @@ void main(uint3 tid : SV_DispatchThreadID) {
                 int2 o = int2(i & 1, i >> 1);
                 int2 q = base + o;
                 if (any(q < int2(0, 0)) || any(q >= size)) continue;
-                if (historyObjectId.Load(int3(q, 0)) != objectId) continue;
+                if (!historyKept(q) || historyObjectId.Load(int3(q, 0)) != objectId) continue;
                 if (abs(historyDepth.Load(int3(q, 0)).r - clip.w) > tolerance) continue;
                 if (dot(historyNormal.Load(int3(q, 0)).xyz, n) < 0.9f) continue;
                 float w = (o.x == 1 ? f.x : 1.0f - f.x) * (o.y == 1 ? f.y : 1.0f - f.y);

@@ -7,6 +7,8 @@
 // by the sum at the receiver, as SVGF's gather does) keeps the energy exactly: every source hands out
 // all of its radiance. (A gather filter loses energy on sparse photon images: a lone photon's pixel
 // averages in its dark neighbours, while they take little of it. Measured: 0.55 of the energy kept.)
+// Over the listed tiles (tiles.comp); a pixel of an unlisted tile receives nothing (no pass writes it),
+// so it is left out of W_q and the energy stays in the listed tiles.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "caustic_filter/filter_common.glsl"
 layout(set = 0, binding = 0) uniform texture2D inColor;   // rgb radiance, a luminance variance
@@ -14,6 +16,8 @@ layout(set = 0, binding = 1) uniform texture2D gLinearDepth;
 layout(set = 0, binding = 2) uniform texture2D gNormal;
 layout(set = 0, binding = 3) uniform utexture2D gObjectId;
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D outSource;   // W, dz/dx, dz/dy, 0
+layout(set = 0, binding = 5, std430) readonly buffer TileList { uint tiles[]; };
+layout(set = 0, binding = 6) uniform utexture2D tileState;   // 0: a tile no filter pass wrote this frame
 layout(push_constant) uniform Push { int stepWidth; int width; int height; float sigmaLuminance; } pc;
 
 bool sameSurface(ivec2 q, uint id) {
@@ -33,7 +37,7 @@ float depthSlope(ivec2 p, ivec2 axis, float z, uint id) {
 }
 
 void main() {
-    ivec2 q = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 q = filterTilePixel(tiles[gl_WorkGroupID.x], gl_LocalInvocationID.xy);
     if (q.x >= pc.width || q.y >= pc.height) return;
     uint id = texelFetch(gObjectId, q, 0).r;
     if (id == 0u) { imageStore(outSource, q, vec4(1.0, 0.0, 0.0, 0.0)); return; }
@@ -46,7 +50,7 @@ void main() {
         for (int dx = -2; dx <= 2; ++dx) {
             ivec2 offset = ivec2(dx, dy) * pc.stepWidth;
             ivec2 p = q + offset;
-            if (!sameSurface(p, id)) continue;
+            if (!sameSurface(p, id) || texelFetch(tileState, p / kFilterTileSize, 0).r == 0u) continue;
             vec4 cp = texelFetch(inColor, p, 0);
             total += filterSpreadWeight(offset, pc.stepWidth, z, texelFetch(gLinearDepth, p, 0).r, gradZ, n,
                                         texelFetch(gNormal, p, 0).xyz, filterLuminance(c.rgb),

@@ -6,6 +6,18 @@
 // Rec. 709 luminance: the scalar whose moments and differences guide the filter (SVGF section 4.2).
 float filterLuminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
+// The filter runs over 8x8 pixel tiles (docs/caustics.md "Filter", "Tiles"): tiles.comp lists the tiles
+// that received photons (and their neighbours) or still hold history, packed x | y << 16, and every filter pass is dispatched
+// indirectly, one 8x8 group per listed tile. No filter pass writes a pixel of an unlisted tile, so its
+// texels of the filter's textures are undefined this frame: neighbourhood reads skip such pixels.
+const int kFilterTileSize = 8;
+// Tile state (tiles.comp): frames the tile's history is kept (0: not listed, its texels stale), bit 31
+// set when a photon reached the tile this frame.
+const uint kFilterTilePhotons = 0x80000000u, kFilterTileKeepMask = 0x7FFFFFFFu;
+ivec2 filterTilePixel(uint tile, uvec2 texel) {
+    return ivec2(int(tile & 0xFFFFu), int(tile >> 16)) * kFilterTileSize + ivec2(texel);
+}
+
 // B3-spline a-trous kernel taps for |offset| = 0, 1, 2 (1/16 (1 4 6 4 1)).
 const float kFilterKernel[3] = float[](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
 

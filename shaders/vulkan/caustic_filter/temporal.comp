@@ -8,7 +8,8 @@
 // the blend 1/n: until the cap the result is the plain mean of every frame that saw the surface point
 // (an unbiased average), then an exponential average with weight 1/maxHistory. The luminance moments
 // (l, l^2) accumulate the same way for the variance estimate. A history that this frame's photons
-// contradict (historyRejected: the caustic moved) is dropped.
+// contradict (historyRejected: the caustic moved) is dropped. Dispatched over the tile list (tiles.comp):
+// a history texel counts only where last frame's tile state kept it (elsewhere it is stale).
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "scene/camera.glsl"
 #include "caustic_filter/filter_common.glsl"
@@ -24,6 +25,8 @@ layout(set = 0, binding = 8) uniform texture2D historyNormal;
 layout(set = 0, binding = 9) uniform utexture2D historyObjectId;
 layout(set = 0, binding = 10, rgba32f) uniform writeonly image2D outColor;
 layout(set = 0, binding = 11, rgba32f) uniform writeonly image2D outMoments;
+layout(set = 0, binding = 12, std430) readonly buffer TileList { uint tiles[]; };
+layout(set = 0, binding = 13) uniform utexture2D previousTiles;   // 0: the history texels there are stale
 layout(push_constant) uniform Push { uint historyValid; float maxHistory; } pc;
 
 const float kHistoryRejectDeviations = 3.0;
@@ -38,6 +41,8 @@ const float kTrustedHistory = 4.0;   // SVGF's threshold for trusting the tempor
 // has to be guessed). Rejected when |C - H| > 3 sqrt(sum V) + 2 q, q the smallest non-zero luminance of
 // this frame in the 3x3 (one photon): a caustic of ~1 photon per pixel per frame that leaves a pixel
 // is caught in one frame, 3 photons where the history was dark start a new one; stray photons do not.
+bool historyKept(ivec2 q) { return texelFetch(previousTiles, q / kFilterTileSize, 0).r != 0u; }
+
 bool historyRejected(ivec2 p, ivec2 nearest, ivec2 size, uint id) {
     float c = 0.0, h = 0.0, v = 0.0, quantum = 0.0;
     for (int dy = -1; dy <= 1; ++dy) {
@@ -45,6 +50,7 @@ bool historyRejected(ivec2 p, ivec2 nearest, ivec2 size, uint id) {
             ivec2 q = p + ivec2(dx, dy), hq = nearest + ivec2(dx, dy);
             if (any(lessThan(min(q, hq), ivec2(0))) || any(greaterThanEqual(max(q, hq), size))) continue;
             if (texelFetch(gObjectId, q, 0).r != id || texelFetch(historyObjectId, hq, 0).r != id) continue;
+            if (!historyKept(hq)) continue;
             float l = filterLuminance(texelFetch(current, q, 0).rgb);
             vec3 m = texelFetch(historyMoments, hq, 0).xyz;
             c += l;
@@ -57,7 +63,7 @@ bool historyRejected(ivec2 p, ivec2 nearest, ivec2 size, uint id) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 p = filterTilePixel(tiles[gl_WorkGroupID.x], gl_LocalInvocationID.xy);
     ivec2 size = ivec2(camera.frame.xy);
     if (p.x >= size.x || p.y >= size.y) return;
     vec3 cur = texelFetch(current, p, 0).rgb;
@@ -83,7 +89,7 @@ void main() {
                 ivec2 o = ivec2(i & 1, i >> 1);
                 ivec2 q = base + o;
                 if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-                if (texelFetch(historyObjectId, q, 0).r != id) continue;
+                if (!historyKept(q) || texelFetch(historyObjectId, q, 0).r != id) continue;
                 if (abs(texelFetch(historyDepth, q, 0).r - clip.w) > tolerance) continue;
                 if (dot(texelFetch(historyNormal, q, 0).xyz, n) < 0.9) continue;
                 float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);

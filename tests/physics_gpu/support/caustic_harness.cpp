@@ -103,6 +103,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
             graph.markOutput(out.stats, ResourceState::CopySource);
             if (out.hits.valid()) graph.markOutput(out.hits, ResourceState::CopySource);
             if (out.spheres.valid()) graph.markOutput(out.spheres, ResourceState::CopySource);
+            if (out.filterTiles.valid()) graph.markOutput(out.filterTiles, ResourceState::CopySource);
         } else {
             graph.markOutput(out.radiance);
         }
@@ -124,6 +125,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         const uint64_t hitBytes = uint64_t(settings.maxStoredHits) * sizeof(CausticHit);
         CAUSTICS_TRY(BufferHandle rbHits, readbackBuffer(device, out.hits.valid() ? hitBytes : 4));
         CAUSTICS_TRY(BufferHandle rbSpheres, readbackBuffer(device, out.spheres.valid() ? pixels * sizeof(CausticSphere) : 4));
+        CAUSTICS_TRY(BufferHandle rbTiles, readbackBuffer(device, 4));
         CAUSTICS_TRY(CommandListHandle copy, device.createCommandList());
         copy->begin();
         copy->copyTextureToBuffer(rbFirst, 0, graph.texture(out.firstType));
@@ -134,6 +136,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         copy->copyBuffer(rbStats, 0, graph.buffer(out.stats), 0, kStatCount * 4);
         if (out.hits.valid()) copy->copyBuffer(rbHits, 0, graph.buffer(out.hits), 0, hitBytes);
         if (out.spheres.valid()) copy->copyBuffer(rbSpheres, 0, graph.buffer(out.spheres), 0, pixels * sizeof(CausticSphere));
+        if (out.filterTiles.valid()) copy->copyBuffer(rbTiles, 0, graph.buffer(out.filterTiles), 0, 4);
         copy->end();
         CAUSTICS_TRY(uint64_t copyFence, device.submit(copy));
         CAUSTICS_CHECK(device.waitForFence(copyFence));
@@ -148,6 +151,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         // The backward pass appends: the first min(spheres, capacity) entries are this frame's.
         if (out.spheres.valid())
             run.spheres = fetch<CausticSphere>(device, rbSpheres, std::min(run.stats[kStatSpheres], run.stats[kStatSphereCapacity]));
+        if (out.filterTiles.valid()) run.filterTiles = fetch<uint32_t>(device, rbTiles, 1).at(0);
         run.plan = out.plan;
     }
     CAUSTICS_CHECK(device.waitIdle());
