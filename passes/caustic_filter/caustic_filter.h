@@ -11,8 +11,8 @@ namespace caustics {
 
 struct CausticFilterPipelines {
     rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout,
-        atrousWeightsLayout, atrousLayout, historyLayout, outputLayout;
-    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousWeights, atrous, history, output;
+        atrousWeightsLayout, atrousLayout, outputLayout;
+    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousWeights, atrous, output;
 
     static Result<CausticFilterPipelines> create(rhi::IDevice& device);
 };

@@ -2,11 +2,13 @@
 // Schied et al. 2017; docs/caustics.md "Filter"), every filter pass dispatched indirectly over a list of
 // the 8x8 tiles that received photons or still hold history (docs/caustics.md "Tiles"):
 //   caustics.filterTiles  the view's tile state (how long each tile's history is kept); .list the tiles
-//   caustics.temporal   reprojected history, disocclusion tests, 1/n average up to the history cap
-//   caustics.history    next frame's history: the temporal result (unfiltered), moments, G-buffer guides
+//   caustics.temporal   reprojected history, disocclusion tests, 1/n average up to the history cap; writes
+//                       this frame's copy of the ping-ponged history (the result, unfiltered, its second
+//                       moment) and the packed guides (depth, gradient, normal, object id) read below
 //   caustics.variance   luminance variance: temporal moments, or photon shot noise for short histories
 //   caustics.atrous.N   edge-aware a-trous iterations stopping at depth, normal, object and luminance:
 //                       .weights (each source's weight sum), then the spreading (energy-preserving)
+//   caustics.filterOutput  (atrousIterations 0 only) the temporal result into caustics.radiance
 // The last pass writes into caustics.radiance, over the listed tiles (the others hold this frame's zeros).
 // With settings.filter off the combined radiance is returned unfiltered.
 #include <string>
@@ -91,22 +93,27 @@ void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
     });
 }
 
+// The view's ping-ponged history (caustic_passes.h): last frame's (read) and this frame's (written).
 struct HistoryHandles {
-    rg::RgTexture color, moments, depth, normal, id;
-    rg::RgTexture previousTiles, tiles;   // last frame's tile state (read), this frame's (written)
+    rg::RgTexture previousColor, previousMoments, previousGuides, previousTiles;
+    rg::RgTexture color, moments, guides, tiles;
 };
 
 HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& history) {
     const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
     const rhi::ResourceState now = history.valid ? ro : rhi::ResourceState::Undefined;
-    const uint32_t previous = history.tileParity, next = history.tileParity ^ 1u;
-    return {graph.importTexture("caustics.historyColor", history.color, now, ro),
-            graph.importTexture("caustics.historyMoments", history.moments, now, ro),
-            graph.importTexture("caustics.historyDepth", history.depth, now, ro),
-            graph.importTexture("caustics.historyNormal", history.normal, now, ro),
-            graph.importTexture("caustics.historyObjectId", history.objectId, now, ro),
-            graph.importTexture("caustics.historyTiles" + std::to_string(previous), history.tiles[previous], now, ro),
-            graph.importTexture("caustics.historyTiles" + std::to_string(next), history.tiles[next], now, ro)};
+    auto import = [&](const char* name, const rhi::TextureHandle (&t)[2], uint32_t i) {
+        return graph.importTexture(std::string(name) + std::to_string(i), t[i], now, ro);
+    };
+    const uint32_t previous = history.parity, next = history.parity ^ 1u;
+    return {import("caustics.historyColor", history.color, previous),
+            import("caustics.historyMoments", history.moments, previous),
+            import("caustics.historyGuides", history.guides, previous),
+            import("caustics.historyTiles", history.tiles, previous),
+            import("caustics.historyColor", history.color, next),
+            import("caustics.historyMoments", history.moments, next),
+            import("caustics.historyGuides", history.guides, next),
+            import("caustics.historyTiles", history.tiles, next)};
 }
 
 // caustics.filterTiles: this frame's tile state (tiles.comp), then caustics.filterTiles.list clears the
@@ -175,34 +182,33 @@ void readTiles(rg::PassBuilder& b, FilterTiles& t, bool state) {
 
 // Iteration i (step 2^i) on `radiance` (rgb, a = variance), which it replaces with its result; the last
 // iteration writes into `output` (caustics.radiance) instead.
-void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterTiles& tiles, rg::RgTexture& radiance,
-                        rg::RgTexture& output) {
+void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterTiles& tiles, rg::RgTexture guides,
+                        rg::RgTexture& radiance, rg::RgTexture& output) {
     const uint32_t w = f.width, h = f.height;
-    const GBuffer& g = f.in->gbuffer;
     const CausticsSettings& s = f.in->settings;
     const std::string name = "caustics.atrous." + std::to_string(i);
     const int32_t step = 1 << i;
     const bool last = i + 1 == s.atrousIterations;
     rg::RgTexture sources;
     graph.addPass(name + ".weights", [&](rg::PassBuilder& b) {
-        const rg::RgTexture in[] = {b.read(radiance), b.read(g.linearDepth), b.read(g.normalRoughness), b.read(g.objectId)};
+        const rg::RgTexture in[] = {b.read(radiance), b.read(guides)};
         readTiles(b, tiles, true);
-        sources = b.write(b.createTexture(name + ".weights", imageDesc(w, h, "caustics.atrousWeights")));
+        sources = b.write(b.createTexture(name + ".weights", imageDesc(w, h, "caustics.atrousWeights")
+                                                                 .setFormat(rhi::Format::R32_FLOAT)));
         CausticFrame fr = f;
         rg::RgTexture o = sources;
         FilterTiles t = tiles;
         struct { int32_t stepWidth, width, height; float sigmaLuminance; } push{step, int32_t(w), int32_t(h),
                                                                                s.filterLuminanceSigma};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1], in[2], in[3]}, {o});
-            d.add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(t.list), false))
-                .add(rhi::BindingSetItem::sampledTexture(6, ctx.texture(t.state)));
+            rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1]}, {o});
+            d.add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(t.list), false))
+                .add(rhi::BindingSetItem::sampledTexture(4, ctx.texture(t.state)));
             dispatchTiles(ctx, *fr.res, fr.res->filter.atrousWeights, fr.res->filter.atrousWeightsLayout, d, push, t.args);
         };
     });
     graph.addPass(name, [&](rg::PassBuilder& b) {
-        const rg::RgTexture in[] = {b.read(radiance), b.read(sources), b.read(g.linearDepth), b.read(g.normalRoughness),
-                                    b.read(g.objectId)};
+        const rg::RgTexture in[] = {b.read(radiance), b.read(sources), b.read(guides)};
         readTiles(b, tiles, true);
         if (last) radiance = output = b.write(output);
         else radiance = b.write(b.createTexture(name, imageDesc(w, h, "caustics.atrous")));
@@ -212,9 +218,9 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
         struct { int32_t stepWidth, width, height; float sigmaLuminance; uint32_t lastIteration; } push{
             step, int32_t(w), int32_t(h), s.filterLuminanceSigma, last ? 1u : 0u};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1], in[2], in[3], in[4]}, {o});
-            d.add(rhi::BindingSetItem::storageBuffer(6, ctx.buffer(t.list), false))
-                .add(rhi::BindingSetItem::sampledTexture(7, ctx.texture(t.state)));
+            rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1], in[2]}, {o});
+            d.add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(t.list), false))
+                .add(rhi::BindingSetItem::sampledTexture(5, ctx.texture(t.state)));
             dispatchTiles(ctx, *fr.res, fr.res->filter.atrous, fr.res->filter.atrousLayout, d, push, t.args);
         };
     });
@@ -238,56 +244,39 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     FilterTiles tiles = addTilePasses(graph, f, hist, raw, historyUsable);
     out.filterTiles = tiles.args;
 
-    rg::RgTexture color, moments;
     graph.addPass("caustics.temporal", [&](rg::PassBuilder& b) {
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.normalRoughness), b.read(g.objectId),
-                                    b.read(hist.color), b.read(hist.moments), b.read(hist.depth), b.read(hist.normal),
-                                    b.read(hist.id), b.read(hist.previousTiles)};
-        readTiles(b, tiles, false);
-        color = b.write(b.createTexture("caustics.temporal", imageDesc(w, h, "caustics.temporal")));
-        moments = b.write(b.createTexture("caustics.moments", imageDesc(w, h, "caustics.moments")));
-        CausticFrame fr = f;
-        rg::RgTexture c = color, m = moments;
-        FilterTiles t = tiles;
-        struct { uint32_t historyValid; float maxHistory; } push{historyUsable ? 1u : 0u, float(s.filterMaxHistory)};
-        return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 1, {in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8]},
-                                                    {c, m});
-            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(fr.camera)))
-                .add(rhi::BindingSetItem::storageBuffer(12, ctx.buffer(t.list), false))
-                .add(rhi::BindingSetItem::sampledTexture(13, ctx.texture(in[9])));
-            dispatchTiles(ctx, *fr.res, fr.res->filter.temporal, fr.res->filter.temporalLayout, d, push, t.args);
-        };
-    });
-
-    graph.addPass("caustics.history", [&](rg::PassBuilder& b) {
-        const rg::RgTexture in[] = {b.read(color), b.read(moments), b.read(g.linearDepth), b.read(g.normalRoughness),
-                                    b.read(g.objectId)};
+                                    b.read(hist.previousColor), b.read(hist.previousMoments), b.read(hist.previousGuides),
+                                    b.read(hist.previousTiles)};
         readTiles(b, tiles, false);
         hist.color = b.write(hist.color);
         hist.moments = b.write(hist.moments);
-        hist.depth = b.write(hist.depth);
-        hist.normal = b.write(hist.normal);
-        hist.id = b.write(hist.id);
+        hist.guides = b.write(hist.guides);
         CausticFrame fr = f;
         HistoryHandles o = hist;
         FilterTiles t = tiles;
-        int32_t push[2] = {int32_t(w), int32_t(h)};
+        struct { uint32_t historyValid; float maxHistory; } push{historyUsable ? 1u : 0u, float(s.filterMaxHistory)};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1], in[2], in[3], in[4]},
-                                                    {o.color, o.moments, o.depth, o.normal, o.id});
-            d.add(rhi::BindingSetItem::storageBuffer(10, ctx.buffer(t.list), false));
-            if (dispatchTiles(ctx, *fr.res, fr.res->filter.history, fr.res->filter.historyLayout, d, push, t.args)) {
-                // Committed when recorded, not when the graph was built; the tile state just written is
-                // the next frame's previous one.
+            rhi::BindingSetDesc d = textureBindings(ctx, 1, {in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7]}, {});
+            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(fr.camera)))
+                .add(rhi::BindingSetItem::storageBuffer(9, ctx.buffer(t.list), false))
+                .add(rhi::BindingSetItem::storageTexture(10, ctx.texture(o.color)))
+                .add(rhi::BindingSetItem::storageTexture(11, ctx.texture(o.moments)))
+                .add(rhi::BindingSetItem::storageTexture(12, ctx.texture(o.guides)));
+            if (dispatchTiles(ctx, *fr.res, fr.res->filter.temporal, fr.res->filter.temporalLayout, d, push, t.args)) {
+                // Committed when recorded, not when the graph was built: this frame's copy is the next
+                // frame's previous one.
                 fr.history->valid = true;
-                fr.history->tileParity ^= 1u;
+                fr.history->parity ^= 1u;
             }
         };
     });
-    // Nothing reads the history this frame: mark it as an output so the pass is not culled.
+    // The next frame reads the history: never culled.
     graph.markOutput(hist.color);
+    graph.markOutput(hist.moments);
+    graph.markOutput(hist.guides);
+    const rg::RgTexture color = hist.color, moments = hist.moments;
 
     if (s.atrousIterations == 0) {
         graph.addPass("caustics.filterOutput", [&](rg::PassBuilder& b) {
@@ -325,7 +314,8 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     });
 
     out.radiance = raw;
-    for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, tiles, radiance, out.radiance);
+    for (uint32_t i = 0; i < s.atrousIterations; ++i)
+        addAtrousIteration(graph, f, i, tiles, hist.guides, radiance, out.radiance);
 }
 
 }  // namespace caustics
