@@ -10,9 +10,9 @@
 namespace caustics {
 
 struct CausticFilterPipelines {
-    rhi::BindingLayoutHandle resolveLayout, temporalLayout, varianceLayout, atrousWeightsLayout, atrousLayout,
-        historyLayout;
-    rhi::ComputePipelineHandle resolve, temporal, variance, atrousWeights, atrous, history;
+    rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout,
+        atrousWeightsLayout, atrousLayout, outputLayout;
+    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousWeights, atrous, output;
 
     static Result<CausticFilterPipelines> create(rhi::IDevice& device);
 };

@@ -26,11 +26,14 @@ void appendCausticMemory(CausticResources& resources, std::vector<MemoryEntry>& 
 }
 
 void appendHistoryMemory(const CausticViewHistory& history, const std::string& prefix, std::vector<MemoryEntry>& out) {
-    addMemoryEntry(out, prefix + ".color", history.color);
-    addMemoryEntry(out, prefix + ".moments", history.moments);
-    addMemoryEntry(out, prefix + ".depth", history.depth);
-    addMemoryEntry(out, prefix + ".normal", history.normal);
-    addMemoryEntry(out, prefix + ".object_id", history.objectId);
+    // Ping-ponged (caustic_passes.h): both copies, suffixed 0 and 1.
+    for (uint32_t i = 0; i < 2; ++i) {
+        const std::string n = std::to_string(i);
+        addMemoryEntry(out, prefix + ".color" + n, history.color[i]);
+        addMemoryEntry(out, prefix + ".moments" + n, history.moments[i]);
+        addMemoryEntry(out, prefix + ".guides" + n, history.guides[i]);
+        addMemoryEntry(out, prefix + ".tiles" + n, history.tiles[i]);
+    }
 }
 
 }  // namespace caustics

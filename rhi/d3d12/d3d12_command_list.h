@@ -26,7 +26,7 @@ public:
     // shader-visible descriptor rings and its upload buffers until the GPU is done.
     ~CommandList() override {
         if (!releases) return;
-        retireToQueue(releases, list, allocator, dispatchRaysSignature);
+        retireToQueue(releases, list, allocator, dispatchRaysSignature, dispatchSignature);
         releases->retire(std::shared_ptr<GpuDescriptorRing>(std::move(resourceRing)));
         releases->retire(std::shared_ptr<GpuDescriptorRing>(std::move(samplerRing)));
         for (auto& upload : keepAlive) releases->retire(std::move(upload));
@@ -191,6 +191,9 @@ public:
         graphics = nullptr;
     }
     void dispatch(uint32_t x, uint32_t y, uint32_t z) override { list->Dispatch(x, y, z); }
+    // d3d12_dispatch_indirect.cpp
+    void dispatchIndirect(const BufferHandle& args, uint64_t offset) override;
+    ComPtr<ID3D12CommandSignature> dispatchSignature;   // made on first use
 
     // d3d12_command_list_graphics.cpp
     void beginRendering(const RenderingDesc& desc) override;

@@ -208,6 +208,17 @@ void VulkanCommandList::setComputePipeline(const ComputePipelineHandle& pipeline
 
 void VulkanCommandList::dispatch(uint32_t x, uint32_t y, uint32_t z) { context_->fn.vkCmdDispatch(commandBuffer_, x, y, z); }
 
+void VulkanCommandList::dispatchIndirect(const BufferHandle& args, uint64_t offset) {
+    VulkanBuffer* buf = toVk(args);
+    if (!buf || !hasAny(args->desc().usage, BufferUsage::Indirect) || offset % 4 != 0 ||
+        offset + 12 > args->desc().byteSize) {
+        recordError("dispatchIndirect: the argument buffer needs BufferUsage::Indirect and 12 bytes at a 4-aligned offset");
+        return;
+    }
+    retain(args);
+    context_->fn.vkCmdDispatchIndirect(commandBuffer_, buf->handle(), offset);
+}
+
 void VulkanCommandList::setBindingSet(uint32_t index, const BindingSetHandle& set) {
     if (boundLayout_ == VK_NULL_HANDLE) {
         recordError("vulkan: setBindingSet before any pipeline was set");

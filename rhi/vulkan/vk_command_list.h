@@ -48,6 +48,7 @@ public:
 
     void setComputePipeline(const ComputePipelineHandle& pipeline) override;
     void dispatch(uint32_t x, uint32_t y = 1, uint32_t z = 1) override;
+    void dispatchIndirect(const BufferHandle& args, uint64_t offset = 0) override;
 
     void beginRendering(const RenderingDesc& desc) override;
     void endRendering() override;

@@ -41,7 +41,7 @@ namespace caustics::rhi::vulkan {
     X(vkGetSemaphoreCounterValue) X(vkWaitSemaphores) X(vkCreateQueryPool) X(vkDestroyQueryPool)             \
     X(vkResetQueryPool) X(vkGetQueryPoolResults)                                                             \
     X(vkCmdBindPipeline) X(vkCmdBindDescriptorSets) X(vkCmdPushConstants) X(vkCmdDispatch) X(vkCmdDraw)      \
-    X(vkCmdDrawIndexed) X(vkCmdBindVertexBuffers) X(vkCmdBindIndexBuffer) X(vkCmdSetViewport)                \
+    X(vkCmdDispatchIndirect) X(vkCmdDrawIndexed) X(vkCmdBindVertexBuffers) X(vkCmdBindIndexBuffer) X(vkCmdSetViewport)                \
     X(vkCmdSetScissor) X(vkCmdBeginRendering) X(vkCmdEndRendering) X(vkCmdPipelineBarrier)                  \
     X(vkCmdPipelineBarrier2) X(vkCmdCopyBuffer) X(vkCmdCopyImage) X(vkCmdCopyBufferToImage)                  \
     X(vkCmdCopyImageToBuffer) X(vkCmdUpdateBuffer) X(vkCmdFillBuffer) X(vkCmdClearColorImage)                \

@@ -11,7 +11,7 @@
 //                      frame's sphere count: caustics.sphereCount reads it back)
 //   caustics.gather    stored forward hits x spheres (any-hit density estimate), second type (3.3)
 //   caustics.resolve   radiance buffers -> textures
-//   caustics.temporal / caustics.atrous / caustics.history   the filter (3.4), when settings.filter
+//   caustics.filterTiles / caustics.temporal / caustics.atrous   the filter (3.4), when settings.filter
 // docs/caustics.md explains every choice the paper leaves open.
 #include <cstdint>
 #include <memory>
@@ -102,17 +102,21 @@ struct CausticSphere {
 };
 static_assert(sizeof(CausticSphere) == 64);
 
-// The filter history of one view (paper 3.4, docs/caustics.md "Filter"): last frame's temporal
-// accumulation (before the spatial passes), its luminance moments and history length, and the G-buffer
-// it was made with. Each view (camera, split-screen half, reflection probe) owns one; sized on first use.
+// The filter history of one view (paper 3.4, docs/caustics.md "Filter", "History"): the temporal
+// accumulation (before the spatial passes), its second luminance moment and history length, the packed
+// G-buffer guides it was made with and the tile state. Ping-ponged: [parity] is last frame's, which
+// caustics.temporal reads while it writes [parity ^ 1] (no copy pass). Each view (camera, split-screen
+// half, reflection probe) owns one; sized on first use.
 struct CausticViewHistory {
-    rhi::TextureHandle color;     // RGBA32F accumulated radiance
-    rhi::TextureHandle moments;   // RGBA32F x E[l], y E[l^2] of luminance, z history length n (sample count)
-    rhi::TextureHandle depth;     // R32F linear depth
-    rhi::TextureHandle normal;    // RGBA16F
-    rhi::TextureHandle objectId;  // R32UI
+    rhi::TextureHandle color[2];    // RGBA32F accumulated radiance rgb, a history length n (sample count)
+    rhi::TextureHandle moments[2];  // R32F E[l^2] of luminance (E[l] is the luminance of color)
+    rhi::TextureHandle guides[2];   // RGBA32UI depth, its gradient, normal, object id (filter_common.glsl)
+    // R32UI per 8x8 pixel tile (docs/caustics.md "Filter", "Tiles"): how many more frames the tile's
+    // history is kept (0: its texels above are stale).
+    rhi::TextureHandle tiles[2];
+    uint32_t parity = 0;
     uint32_t width = 0, height = 0;
-    // True once a frame's caustics.history pass has been RECORDED (graph execution), so a graph that is
+    // True once a frame's caustics.temporal pass has been RECORDED (graph execution), so a graph that is
     // built and never executed does not make the history look valid.
     bool valid = false;
 };
@@ -176,6 +180,7 @@ struct CausticOutputs {
     rg::RgBuffer layerPlans;    // CausticLayerPlanGpu per plan.maps entry (invalid without maps)
     rg::RgBuffer spheres;       // CausticSphere[W x H], the first min(kStatSpheres, kStatSphereCapacity)
                                 // valid (invalid when the second type did not run)
+    rg::RgBuffer filterTiles;   // uint32 (tiles the filter ran on, 1, 1) when settings.filter (docs/caustics.md "Tiles")
     rg::RgTexture mapObjectIds; // R32_UINT array, one layer per planned map (instance + 1; invalid if none)
     CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped
     bool floatAtomics = true;   // false: the buffers hold fixed point, value x fixedPointScale

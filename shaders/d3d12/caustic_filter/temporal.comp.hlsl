@@ -1,7 +1,9 @@
 // Temporal accumulation (SVGF, Schied et al. 2017, section 4.1; mirror of shaders/vulkan/
 // caustic_filter/temporal.comp): bilinear history taps that pass the disocclusion test (object id,
 // depth, normal), blended with weight 1/n, n = history length capped at maxHistory. prevViewProj is
-// Vulkan's clip (y down) and is used as such: no rasterizer here.
+// Vulkan's clip (y down) and is used as such: no rasterizer here. Dispatched over the tile list; a
+// history texel counts only where last frame's tile state kept it. Reads last frame's ping-ponged
+// history, writes this frame's and packs this frame's guides.
 #include "scene/camera.hlsli"
 #include "caustic_filter/filter_common.hlsli"
 struct CameraBlock { CameraConstants camera; };
@@ -10,37 +12,38 @@ Texture2D<float4> current : register(t1, space0);
 Texture2D<float4> gLinearDepth : register(t2, space0);
 Texture2D<float4> gNormal : register(t3, space0);
 Texture2D<uint> gObjectId : register(t4, space0);
-Texture2D<float4> historyColor : register(t5, space0);
-Texture2D<float4> historyMoments : register(t6, space0);   // x E[l], y E[l^2], z n
-Texture2D<float4> historyDepth : register(t7, space0);
-Texture2D<float4> historyNormal : register(t8, space0);
-Texture2D<uint> historyObjectId : register(t9, space0);
+Texture2D<float4> historyColor : register(t5, space0);     // rgb mean, a history length n
+Texture2D<float4> historyMoments : register(t6, space0);   // r E[l^2]
+Texture2D<uint4> historyGuides : register(t7, space0);
+Texture2D<uint> previousTiles : register(t8, space0);
+ByteAddressBuffer tiles : register(t9, space0);
 RWTexture2D<float4> outColor : register(u10, space0);
-RWTexture2D<float4> outMoments : register(u11, space0);
+RWTexture2D<float> outMoments : register(u11, space0);
+RWTexture2D<uint4> outGuides : register(u12, space0);
 struct Push { uint historyValid; float maxHistory; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
 static const float kHistoryRejectDeviations = 3.0f;
 static const float kTrustedHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
 
-// True when this frame's caustic around p is inconsistent with the history (the caustic moved: a light
-// or an object moved, which the camera reprojection cannot follow; docs/caustics.md "Filter", "Moving
-// caustics"). Compares the 3x3 sums of this frame's luminance C and of the history's mean H over the
-// same taps (history texels nearest to the reprojected point, offset alike), taps of this object only.
-// Under "nothing changed", C - H has the variance of one frame's 3x3 sum, the sum of the taps' per-frame
-// variances V (temporal moments; for a compound-Poisson photon sum V = q_eff E[l], so no photon quantum
-// has to be guessed). Rejected when |C - H| > 3 sqrt(sum V) + 2 q, q the smallest non-zero luminance of
-// this frame in the 3x3 (one photon): a caustic of ~1 photon per pixel per frame that leaves a pixel
-// is caught in one frame, 3 photons where the history was dark start a new one; stray photons do not.
+bool historyKept(int2 q) { return previousTiles.Load(int3(q / kFilterTileSize, 0)) != 0u; }
+
+float3 historyMomentsAt(int2 q) {
+    float4 c = historyColor.Load(int3(q, 0));
+    return float3(filterLuminance(c.rgb), historyMoments.Load(int3(q, 0)).r, c.a);
+}
+
+// True when this frame's caustic around p is inconsistent with the history (temporal.comp explains it).
 bool historyRejected(int2 p, int2 nearest, int2 size, uint id) {
     float c = 0.0f, h = 0.0f, v = 0.0f, quantum = 0.0f;
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             int2 q = p + int2(dx, dy), hq = nearest + int2(dx, dy);
             if (any(min(q, hq) < int2(0, 0)) || any(max(q, hq) >= size)) continue;
-            if (gObjectId.Load(int3(q, 0)) != id || historyObjectId.Load(int3(hq, 0)) != id) continue;
+            if (gObjectId.Load(int3(q, 0)) != id || !historyKept(hq) || historyGuides.Load(int3(hq, 0)).w != id)
+                continue;
             float l = filterLuminance(current.Load(int3(q, 0)).rgb);
-            float3 m = historyMoments.Load(int3(hq, 0)).xyz;
+            float3 m = historyMomentsAt(hq);
             c += l;
             h += m.x;
             v += max(0.0f, m.y - m.x * m.x);
@@ -50,10 +53,25 @@ bool historyRejected(int2 p, int2 nearest, int2 size, uint id) {
     return abs(c - h) > kHistoryRejectDeviations * sqrt(v) + 2.0f * quantum;
 }
 
+bool sameSurface(int2 q, int2 size, uint id) {
+    return all(q >= int2(0, 0)) && all(q < size) && gObjectId.Load(int3(q, 0)) == id;
+}
+
+// Smaller one-sided difference of linear depth along `axis` (no leniency across a depth edge).
+float depthSlope(int2 p, int2 axis, int2 size, float z, uint id) {
+    float slope = 3.0e38f;
+    if (sameSurface(p + axis, size, id)) slope = gLinearDepth.Load(int3(p + axis, 0)).r - z;
+    if (sameSurface(p - axis, size, id)) {
+        float back = z - gLinearDepth.Load(int3(p - axis, 0)).r;
+        if (abs(back) < abs(slope)) slope = back;
+    }
+    return slope < 3.0e38f ? slope : 0.0f;
+}
+
 [numthreads(8, 8, 1)]
-void main(uint3 tid : SV_DispatchThreadID) {
+void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
     CameraConstants camera = cameraBlock.camera;
-    int2 p = int2(tid.xy);
+    int2 p = filterTilePixel(tiles.Load(4u * group.x), groupThread.xy);
     int2 size = int2(camera.frame.xy);
     if (p.x >= size.x || p.y >= size.y) return;
     float3 cur = current.Load(int3(p, 0)).rgb;
@@ -62,7 +80,7 @@ void main(uint3 tid : SV_DispatchThreadID) {
     float3 n = gNormal.Load(int3(p, 0)).xyz;
     uint objectId = gObjectId.Load(int3(p, 0));
     float3 color = cur;
-    float2 moments = float2(l, l * l);
+    float moment2 = l * l;
     float historyLength = 1.0f;
     if (pc.historyValid != 0u && objectId != 0u && depth > 0.0f) {
         float3 world = cameraWorldPosition(camera, float2(p) + 0.5f, depth);
@@ -80,19 +98,18 @@ void main(uint3 tid : SV_DispatchThreadID) {
                 int2 o = int2(i & 1, i >> 1);
                 int2 q = base + o;
                 if (any(q < int2(0, 0)) || any(q >= size)) continue;
-                if (historyObjectId.Load(int3(q, 0)) != objectId) continue;
-                if (abs(historyDepth.Load(int3(q, 0)).r - clip.w) > tolerance) continue;
-                if (dot(historyNormal.Load(int3(q, 0)).xyz, n) < 0.9f) continue;
+                if (!historyKept(q)) continue;
+                FilterGuide hg = filterUnpackGuide(historyGuides.Load(int3(q, 0)));
+                if (hg.id != objectId) continue;
+                if (abs(hg.depth - clip.w) > tolerance) continue;
+                if (dot(hg.normal, n) < 0.9f) continue;
                 float w = (o.x == 1 ? f.x : 1.0f - f.x) * (o.y == 1 ? f.y : 1.0f - f.y);
                 hColor += w * historyColor.Load(int3(q, 0)).rgb;
-                // Per-tap variance, not the moments: mixing the moments of neighbouring texels would add
-                // their signal difference to the variance.
-                float3 m = historyMoments.Load(int3(q, 0)).xyz;
+                // Per-tap variance, not the moments (temporal.comp says why).
+                float3 m = historyMomentsAt(q);
                 hMoments += w * float3(m.x, max(0.0f, m.y - m.x * m.x), m.z);
                 wSum += w;
             }
-            // The test needs variances from the moments: histories shorter than kTrustedHistory frames
-            // are short already (their lag is at most that long).
             bool rejected = wSum > 0.01f && hMoments.z / wSum >= kTrustedHistory &&
                             historyRejected(p, int2(floor(prev + 0.5f)), size, objectId);
             if (wSum > 0.01f && !rejected) {
@@ -102,10 +119,12 @@ void main(uint3 tid : SV_DispatchThreadID) {
                 historyLength = min(hMoments.z + 1.0f, pc.maxHistory);
                 float alpha = 1.0f / historyLength;
                 color = lerp(hColor, cur, alpha);
-                moments = lerp(hMoments.xy, moments, alpha);
+                moment2 = lerp(hMoments.y, moment2, alpha);
             }
         }
     }
-    outColor[p] = float4(color, 1.0f);
-    outMoments[p] = float4(moments, historyLength, 0.0f);
+    float2 gradZ = float2(depthSlope(p, int2(1, 0), size, depth, objectId), depthSlope(p, int2(0, 1), size, depth, objectId));
+    outColor[p] = float4(color, historyLength);
+    outMoments[p] = moment2;
+    outGuides[p] = filterPackGuide(depth, gradZ, n, objectId);
 }

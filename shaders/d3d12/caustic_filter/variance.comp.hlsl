@@ -2,16 +2,26 @@
 // shaders/vulkan/caustic_filter/variance.comp, which explains the model): temporal moments with 4 or
 // more frames of history (max(own, 3x3 mean)), else photon shot noise q l (q: smallest non-zero luminance of this frame in
 // the 7x7 window, l: max(own, 3x3 mean) of the accumulated luminance). Alpha: variance of the mean.
+// Over the listed tiles; a neighbour in an unlisted tile counts as zero.
 #include "caustic_filter/filter_common.hlsli"
 Texture2D<float4> current : register(t0, space0);
 Texture2D<float4> temporalColor : register(t1, space0);
-Texture2D<float4> temporalMoments : register(t2, space0);
+Texture2D<float4> temporalMoments : register(t2, space0);   // r E[l^2]; temporalColor.a is n
 Texture2D<uint> gObjectId : register(t3, space0);
 RWTexture2D<float4> outColor : register(u4, space0);
+ByteAddressBuffer tiles : register(t5, space0);
+Texture2D<uint> tileState : register(t6, space0);   // 0: a tile no filter pass wrote this frame
 struct Push { int width; int height; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
 static const float kTemporalHistory = 4.0f;
+
+bool listed(int2 q) { return tileState.Load(int3(q / kFilterTileSize, 0)) != 0u; }
+
+float3 momentsAt(int2 q) {
+    float4 c = temporalColor.Load(int3(q, 0));
+    return float3(filterLuminance(c.rgb), temporalMoments.Load(int3(q, 0)).r, c.a);
+}
 
 float temporalVariance(float3 moments) { return max(0.0f, moments.y - moments.x * moments.x); }
 
@@ -23,7 +33,7 @@ float localMeanTemporalVariance(int2 p, uint objectId) {
             int2 q = p + int2(dx, dy);
             if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
             if (gObjectId.Load(int3(q, 0)) != objectId) continue;
-            sum += temporalVariance(temporalMoments.Load(int3(q, 0)).xyz);
+            if (listed(q)) sum += temporalVariance(momentsAt(q));
             count += 1.0f;
         }
     }
@@ -31,11 +41,11 @@ float localMeanTemporalVariance(int2 p, uint objectId) {
 }
 
 [numthreads(8, 8, 1)]
-void main(uint3 tid : SV_DispatchThreadID) {
-    int2 p = int2(tid.xy);
+void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
+    int2 p = filterTilePixel(tiles.Load(4u * group.x), groupThread.xy);
     if (p.x >= pc.width || p.y >= pc.height) return;
     float3 accumulated = temporalColor.Load(int3(p, 0)).rgb;
-    float3 moments = temporalMoments.Load(int3(p, 0)).xyz;
+    float3 moments = momentsAt(p);
     uint objectId = gObjectId.Load(int3(p, 0));
     float n = max(moments.z, 1.0f);
     float variance = 0.0f;
@@ -52,7 +62,7 @@ void main(uint3 tid : SV_DispatchThreadID) {
                 float l = filterLuminance(current.Load(int3(q, 0)).rgb);
                 if (l > 0.0f) quantum = min(quantum, l);
                 if (abs(dx) <= 1 && abs(dy) <= 1) {
-                    localSum += filterLuminance(temporalColor.Load(int3(q, 0)).rgb);
+                    if (listed(q)) localSum += filterLuminance(temporalColor.Load(int3(q, 0)).rgb);
                     localCount += 1.0f;
                 }
             }

@@ -6,6 +6,42 @@
 // Rec. 709 luminance: the scalar whose moments and differences guide the filter (SVGF section 4.2).
 float filterLuminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
+// The filter runs over 8x8 pixel tiles (docs/caustics.md "Filter", "Tiles"): tiles.comp lists the tiles
+// that received photons (and their neighbours) or still hold history, packed x | y << 16, and every filter pass is dispatched
+// indirectly, one 8x8 group per listed tile. No filter pass writes a pixel of an unlisted tile, so its
+// texels of the filter's textures are undefined this frame: neighbourhood reads skip such pixels.
+const int kFilterTileSize = 8;
+// Tile state (tiles.comp): frames the tile's history is kept (0: not listed, its texels stale), bit 31
+// set when a photon reached the tile this frame.
+const uint kFilterTilePhotons = 0x80000000u, kFilterTileKeepMask = 0x7FFFFFFFu;
+ivec2 filterTilePixel(uint tile, uvec2 texel) {
+    return ivec2(int(tile & 0xFFFFu), int(tile >> 16)) * kFilterTileSize + ivec2(texel);
+}
+
+// The guides, packed once per frame by caustics.temporal into one RGBA32UI texel (docs/caustics.md
+// "Filter", "Guides"): x linear depth (float bits), y its screen-space gradient (2 x half), z the normal
+// (octahedral, 2 x snorm16), w the object id. This frame's a-trous passes read them, the next frame's
+// temporal pass reads them as the history's guides.
+struct FilterGuide {
+    float depth;
+    vec2 gradZ;
+    vec3 normal;
+    uint id;
+};
+uvec4 filterPackGuide(float depth, vec2 gradZ, vec3 n, uint id) {
+    float l1 = abs(n.x) + abs(n.y) + abs(n.z);
+    n = l1 > 0.0 ? n / l1 : vec3(0.0, 0.0, 1.0);
+    vec2 e = n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+    return uvec4(floatBitsToUint(depth), packHalf2x16(gradZ), packSnorm2x16(e), id);
+}
+FilterGuide filterUnpackGuide(uvec4 g) {
+    vec2 e = unpackSnorm2x16(g.z);
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    float t = max(-n.z, 0.0);
+    n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
+    return FilterGuide(uintBitsToFloat(g.x), unpackHalf2x16(g.y), normalize(n), g.w);
+}
+
 // B3-spline a-trous kernel taps for |offset| = 0, 1, 2 (1/16 (1 4 6 4 1)).
 const float kFilterKernel[3] = float[](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
 

@@ -8,7 +8,10 @@
 // the blend 1/n: until the cap the result is the plain mean of every frame that saw the surface point
 // (an unbiased average), then an exponential average with weight 1/maxHistory. The luminance moments
 // (l, l^2) accumulate the same way for the variance estimate. A history that this frame's photons
-// contradict (historyRejected: the caustic moved) is dropped.
+// contradict (historyRejected: the caustic moved) is dropped. Dispatched over the tile list (tiles.comp):
+// a history texel counts only where last frame's tile state kept it (elsewhere it is stale). The history
+// is ping-ponged (docs/caustics.md "Filter", "History"): this pass reads last frame's and writes this
+// frame's (the result, before any spatial pass), and packs this frame's guides, so no copy pass follows.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "scene/camera.glsl"
 #include "caustic_filter/filter_common.glsl"
@@ -17,17 +20,26 @@ layout(set = 0, binding = 1) uniform texture2D current;
 layout(set = 0, binding = 2) uniform texture2D gLinearDepth;
 layout(set = 0, binding = 3) uniform texture2D gNormal;
 layout(set = 0, binding = 4) uniform utexture2D gObjectId;
-layout(set = 0, binding = 5) uniform texture2D historyColor;
-layout(set = 0, binding = 6) uniform texture2D historyMoments;   // x E[l], y E[l^2], z n
-layout(set = 0, binding = 7) uniform texture2D historyDepth;
-layout(set = 0, binding = 8) uniform texture2D historyNormal;
-layout(set = 0, binding = 9) uniform utexture2D historyObjectId;
+layout(set = 0, binding = 5) uniform texture2D historyColor;     // rgb mean, a history length n
+layout(set = 0, binding = 6) uniform texture2D historyMoments;   // r E[l^2] (E[l] = luminance of the mean)
+layout(set = 0, binding = 7) uniform utexture2D historyGuides;   // filterPackGuide
+layout(set = 0, binding = 8) uniform utexture2D previousTiles;   // 0: the history texels there are stale
+layout(set = 0, binding = 9, std430) readonly buffer TileList { uint tiles[]; };
 layout(set = 0, binding = 10, rgba32f) uniform writeonly image2D outColor;
-layout(set = 0, binding = 11, rgba32f) uniform writeonly image2D outMoments;
+layout(set = 0, binding = 11, r32f) uniform writeonly image2D outMoments;
+layout(set = 0, binding = 12, rgba32ui) uniform writeonly uimage2D outGuides;
 layout(push_constant) uniform Push { uint historyValid; float maxHistory; } pc;
 
 const float kHistoryRejectDeviations = 3.0;
 const float kTrustedHistory = 4.0;   // SVGF's threshold for trusting the temporal moments
+
+bool historyKept(ivec2 q) { return texelFetch(previousTiles, q / kFilterTileSize, 0).r != 0u; }
+
+// E[l], E[l^2], n of a history texel.
+vec3 historyMomentsAt(ivec2 q) {
+    vec4 c = texelFetch(historyColor, q, 0);
+    return vec3(filterLuminance(c.rgb), texelFetch(historyMoments, q, 0).r, c.a);
+}
 
 // True when this frame's caustic around p is inconsistent with the history (the caustic moved: a light
 // or an object moved, which the camera reprojection cannot follow; docs/caustics.md "Filter", "Moving
@@ -44,9 +56,10 @@ bool historyRejected(ivec2 p, ivec2 nearest, ivec2 size, uint id) {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = p + ivec2(dx, dy), hq = nearest + ivec2(dx, dy);
             if (any(lessThan(min(q, hq), ivec2(0))) || any(greaterThanEqual(max(q, hq), size))) continue;
-            if (texelFetch(gObjectId, q, 0).r != id || texelFetch(historyObjectId, hq, 0).r != id) continue;
+            if (texelFetch(gObjectId, q, 0).r != id || !historyKept(hq) || texelFetch(historyGuides, hq, 0).w != id)
+                continue;
             float l = filterLuminance(texelFetch(current, q, 0).rgb);
-            vec3 m = texelFetch(historyMoments, hq, 0).xyz;
+            vec3 m = historyMomentsAt(hq);
             c += l;
             h += m.x;
             v += max(0.0, m.y - m.x * m.x);
@@ -56,8 +69,24 @@ bool historyRejected(ivec2 p, ivec2 nearest, ivec2 size, uint id) {
     return abs(c - h) > kHistoryRejectDeviations * sqrt(v) + 2.0 * quantum;
 }
 
+bool sameSurface(ivec2 q, ivec2 size, uint id) {
+    return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size)) && texelFetch(gObjectId, q, 0).r == id;
+}
+
+// Screen-space derivative of linear depth along `axis`: the smaller one-sided difference, so a
+// neighbour across a depth edge does not make the a-trous plane test lenient. Once per frame, here.
+float depthSlope(ivec2 p, ivec2 axis, ivec2 size, float z, uint id) {
+    float slope = 3.0e38;
+    if (sameSurface(p + axis, size, id)) slope = texelFetch(gLinearDepth, p + axis, 0).r - z;
+    if (sameSurface(p - axis, size, id)) {
+        float back = z - texelFetch(gLinearDepth, p - axis, 0).r;
+        if (abs(back) < abs(slope)) slope = back;
+    }
+    return slope < 3.0e38 ? slope : 0.0;
+}
+
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 p = filterTilePixel(tiles[gl_WorkGroupID.x], gl_LocalInvocationID.xy);
     ivec2 size = ivec2(camera.frame.xy);
     if (p.x >= size.x || p.y >= size.y) return;
     vec3 cur = texelFetch(current, p, 0).rgb;
@@ -66,7 +95,7 @@ void main() {
     vec3 n = texelFetch(gNormal, p, 0).xyz;
     uint id = texelFetch(gObjectId, p, 0).r;
     vec3 color = cur;
-    vec2 moments = vec2(l, l * l);
+    float moment2 = l * l;
     float historyLength = 1.0;
     if (pc.historyValid != 0u && id != 0u && depth > 0.0) {
         vec3 world = cameraWorldPosition(camera, vec2(p) + 0.5, depth);
@@ -83,14 +112,16 @@ void main() {
                 ivec2 o = ivec2(i & 1, i >> 1);
                 ivec2 q = base + o;
                 if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-                if (texelFetch(historyObjectId, q, 0).r != id) continue;
-                if (abs(texelFetch(historyDepth, q, 0).r - clip.w) > tolerance) continue;
-                if (dot(texelFetch(historyNormal, q, 0).xyz, n) < 0.9) continue;
+                if (!historyKept(q)) continue;
+                FilterGuide hg = filterUnpackGuide(texelFetch(historyGuides, q, 0));
+                if (hg.id != id) continue;
+                if (abs(hg.depth - clip.w) > tolerance) continue;
+                if (dot(hg.normal, n) < 0.9) continue;
                 float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
                 hColor += w * texelFetch(historyColor, q, 0).rgb;
                 // Per-tap variance, not the moments: mixing the moments of neighbouring texels would add
                 // their signal difference (a focal spot's edge) to the variance.
-                vec3 m = texelFetch(historyMoments, q, 0).xyz;
+                vec3 m = historyMomentsAt(q);
                 hMoments += w * vec3(m.x, max(0.0, m.y - m.x * m.x), m.z);
                 wSum += w;
             }
@@ -105,10 +136,12 @@ void main() {
                 historyLength = min(hMoments.z + 1.0, pc.maxHistory);
                 float alpha = 1.0 / historyLength;
                 color = mix(hColor, cur, alpha);
-                moments = mix(hMoments.xy, moments, alpha);
+                moment2 = mix(hMoments.y, moment2, alpha);
             }
         }
     }
-    imageStore(outColor, p, vec4(color, 1.0));
-    imageStore(outMoments, p, vec4(moments, historyLength, 0.0));
+    vec2 gradZ = vec2(depthSlope(p, ivec2(1, 0), size, depth, id), depthSlope(p, ivec2(0, 1), size, depth, id));
+    imageStore(outColor, p, vec4(color, historyLength));
+    imageStore(outMoments, p, vec4(moment2));
+    imageStore(outGuides, p, filterPackGuide(depth, gradZ, n, id));
 }

@@ -13,17 +13,28 @@
 // (the max keeps a focal spot's own, larger, noise). SVGF's 7x7 sample
 // variance would count a focal spot's own shape as noise and blur it away; shot noise grows only as
 // the square root of the photon count, so a bright spot of many photons keeps its edges.
-// Output alpha: the variance of the accumulated mean, per-frame variance / n.
+// Output alpha: the variance of the accumulated mean, per-frame variance / n. Over the listed tiles;
+// a neighbour in an unlisted tile (no photon, no history kept) counts as zero in the 3x3 means.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "caustic_filter/filter_common.glsl"
 layout(set = 0, binding = 0) uniform texture2D current;          // this frame, unfiltered
-layout(set = 0, binding = 1) uniform texture2D temporalColor;
-layout(set = 0, binding = 2) uniform texture2D temporalMoments;  // x E[l], y E[l^2], z n
+layout(set = 0, binding = 1) uniform texture2D temporalColor;    // rgb mean, a n (this frame's history)
+layout(set = 0, binding = 2) uniform texture2D temporalMoments;  // r E[l^2]
 layout(set = 0, binding = 3) uniform utexture2D gObjectId;
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 5, std430) readonly buffer TileList { uint tiles[]; };
+layout(set = 0, binding = 6) uniform utexture2D tileState;   // 0: a tile no filter pass wrote this frame
 layout(push_constant) uniform Push { int width; int height; } pc;
 
 const float kTemporalHistory = 4.0;   // SVGF's threshold for trusting the temporal moments
+
+bool listed(ivec2 q) { return texelFetch(tileState, q / kFilterTileSize, 0).r != 0u; }
+
+// E[l], E[l^2], n at q (E[l] is the luminance of the mean).
+vec3 momentsAt(ivec2 q) {
+    vec4 c = texelFetch(temporalColor, q, 0);
+    return vec3(filterLuminance(c.rgb), texelFetch(temporalMoments, q, 0).r, c.a);
+}
 
 float temporalVariance(vec3 moments) { return max(0.0, moments.y - moments.x * moments.x); }
 
@@ -36,7 +47,7 @@ float localMeanTemporalVariance(ivec2 p, uint id) {
             ivec2 q = p + ivec2(dx, dy);
             if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
             if (texelFetch(gObjectId, q, 0).r != id) continue;
-            sum += temporalVariance(texelFetch(temporalMoments, q, 0).xyz);
+            if (listed(q)) sum += temporalVariance(momentsAt(q));
             count += 1.0;
         }
     }
@@ -44,10 +55,10 @@ float localMeanTemporalVariance(ivec2 p, uint id) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 p = filterTilePixel(tiles[gl_WorkGroupID.x], gl_LocalInvocationID.xy);
     if (p.x >= pc.width || p.y >= pc.height) return;
     vec3 accumulated = texelFetch(temporalColor, p, 0).rgb;
-    vec3 moments = texelFetch(temporalMoments, p, 0).xyz;
+    vec3 moments = momentsAt(p);
     uint id = texelFetch(gObjectId, p, 0).r;
     float n = max(moments.z, 1.0);
     float variance = 0.0;
@@ -64,7 +75,7 @@ void main() {
                 float l = filterLuminance(texelFetch(current, q, 0).rgb);
                 if (l > 0.0) quantum = min(quantum, l);
                 if (abs(dx) <= 1 && abs(dy) <= 1) {
-                    localSum += filterLuminance(texelFetch(temporalColor, q, 0).rgb);
+                    if (listed(q)) localSum += filterLuminance(texelFetch(temporalColor, q, 0).rgb);
                     localCount += 1.0;
                 }
             }

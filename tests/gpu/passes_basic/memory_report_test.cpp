@@ -66,14 +66,17 @@ TEST_F(MemoryReport, EntriesFollowTheFrameThatRan) {
     const std::vector<MemoryEntry> report = module->memoryReport();
     auto large = byName(report);
 
-    // The default view's filter history: RGBA32F colour and moments, R32F depth, RGBA16F normal, R32UI id.
+    // The default view's filter history, two copies of each (ping-pong): RGBA32F colour, R32F second
+    // moment, RGBA32UI packed guides, R32UI tile state per 8x8 tile.
     const uint64_t pixels = 128 * 96;
-    EXPECT_EQ(large["view.history.color"], pixels * 16);
-    EXPECT_EQ(large["view.history.moments"], pixels * 16);
-    EXPECT_EQ(large["view.history.depth"], pixels * 4);
-    EXPECT_EQ(large["view.history.normal"], pixels * 8);
-    EXPECT_EQ(large["view.history.object_id"], pixels * 4);
-    EXPECT_EQ(small["view.history.color"], 64u * 48u * 16u);
+    for (const char* copy : {"0", "1"}) {
+        const std::string h = std::string("view.history.");
+        EXPECT_EQ(large[h + "color" + copy], pixels * 16);
+        EXPECT_EQ(large[h + "moments" + copy], pixels * 4);
+        EXPECT_EQ(large[h + "guides" + copy], pixels * 16);
+        EXPECT_EQ(large[h + "tiles" + copy], (128u / 8) * (96u / 8) * 4u);
+    }
+    EXPECT_EQ(small["view.history.color0"], 64u * 48u * 16u);
 
     // Acceleration structures report the driver's sizes: the scene's (built at GpuScene::create) and the
     // sphere TLAS, allocated for W x H instances (docs/caustics.md "Memory kept"): 4x the pixels, 4x
@@ -102,13 +105,13 @@ TEST_F(MemoryReport, ASecondViewReportsItsOwnHistory) {
     auto view = module->createView();
     ASSERT_TRUE(view) << view.message();
     auto before = byName(module->memoryReport(**view));
-    EXPECT_EQ(before.count("view.history.color"), 0u) << "history before the view rendered anything";
+    EXPECT_EQ(before.count("view.history.color0"), 0u) << "history before the view rendered anything";
     renderFrame(96, 64, view->get());
     auto after = byName(module->memoryReport(**view));
-    EXPECT_EQ(after["view.history.color"], 96u * 64u * 16u);
+    EXPECT_EQ(after["view.history.color0"], 96u * 64u * 16u);
     // The default view rendered nothing: no history in the module's report.
     auto own = byName(module->memoryReport());
-    EXPECT_EQ(own.count("view.history.color"), 0u);
+    EXPECT_EQ(own.count("view.history.color0"), 0u);
 }
 
 }  // namespace

@@ -104,6 +104,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
             if (out.hits.valid()) graph.markOutput(out.hits, ResourceState::CopySource);
             if (out.spheres.valid()) graph.markOutput(out.spheres, ResourceState::CopySource);
             if (out.layerPlans.valid()) graph.markOutput(out.layerPlans, ResourceState::CopySource);
+            if (out.filterTiles.valid()) graph.markOutput(out.filterTiles, ResourceState::CopySource);
         } else {
             graph.markOutput(out.radiance);
         }
@@ -127,6 +128,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         CAUSTICS_TRY(BufferHandle rbSpheres, readbackBuffer(device, out.spheres.valid() ? pixels * sizeof(CausticSphere) : 4));
         const uint64_t planBytes = std::max<uint64_t>(out.plan.maps.size(), 1) * sizeof(CausticLayerPlanGpu);
         CAUSTICS_TRY(BufferHandle rbPlans, readbackBuffer(device, planBytes));
+        CAUSTICS_TRY(BufferHandle rbTiles, readbackBuffer(device, 4));
         CAUSTICS_TRY(CommandListHandle copy, device.createCommandList());
         copy->begin();
         copy->copyTextureToBuffer(rbFirst, 0, graph.texture(out.firstType));
@@ -138,6 +140,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         if (out.hits.valid()) copy->copyBuffer(rbHits, 0, graph.buffer(out.hits), 0, hitBytes);
         if (out.spheres.valid()) copy->copyBuffer(rbSpheres, 0, graph.buffer(out.spheres), 0, pixels * sizeof(CausticSphere));
         if (out.layerPlans.valid()) copy->copyBuffer(rbPlans, 0, graph.buffer(out.layerPlans), 0, planBytes);
+        if (out.filterTiles.valid()) copy->copyBuffer(rbTiles, 0, graph.buffer(out.filterTiles), 0, 4);
         copy->end();
         CAUSTICS_TRY(uint64_t copyFence, device.submit(copy));
         CAUSTICS_CHECK(device.waitForFence(copyFence));
@@ -152,6 +155,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         // The backward pass appends: the first min(spheres, capacity) entries are this frame's.
         if (out.spheres.valid())
             run.spheres = fetch<CausticSphere>(device, rbSpheres, std::min(run.stats[kStatSpheres], run.stats[kStatSphereCapacity]));
+        if (out.filterTiles.valid()) run.filterTiles = fetch<uint32_t>(device, rbTiles, 1).at(0);
         run.plan = out.plan;
         if (out.layerPlans.valid()) run.layerPlans = fetch<CausticLayerPlanGpu>(device, rbPlans, out.plan.maps.size());
     }

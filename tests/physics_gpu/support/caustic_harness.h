@@ -21,6 +21,7 @@ struct CausticRun {
     std::vector<CausticSphere> spheres;                      // the frame's spheres, in append order (secondType on)
     std::vector<float> linearDepth;
     std::vector<uint32_t> objectId;
+    uint32_t filterTiles = ~0u;                              // tiles the filter ran on (settings.filter)
     CausticMapPlan plan;
     std::vector<CausticLayerPlanGpu> layerPlans;             // one per plan.maps entry
 

@@ -62,6 +62,7 @@ public:
     void clearTextureUint(const rhi::TextureHandle&, const uint32_t[4]) override {}
     void setComputePipeline(const rhi::ComputePipelineHandle&) override {}
     void dispatch(uint32_t, uint32_t, uint32_t) override { calls.push_back("dispatch"); }
+    void dispatchIndirect(const rhi::BufferHandle&, uint64_t) override { calls.push_back("dispatchIndirect"); }
     void beginRendering(const rhi::RenderingDesc&) override {}
     void endRendering() override {}
     void setGraphicsPipeline(const rhi::GraphicsPipelineHandle&) override {}

@@ -113,6 +113,10 @@ public:
     // Compute.
     virtual void setComputePipeline(const ComputePipelineHandle& pipeline) = 0;
     virtual void dispatch(uint32_t x, uint32_t y = 1, uint32_t z = 1) = 0;
+    // As dispatch, with the group counts read by the GPU: three uint32 (x, y, z) at `offset` of `args`
+    // (BufferUsage::Indirect, in ResourceState::IndirectArgument; offset a multiple of 4). Core in both
+    // APIs: Vulkan vkCmdDispatchIndirect, D3D12 ExecuteIndirect with a Dispatch command signature.
+    virtual void dispatchIndirect(const BufferHandle& args, uint64_t offset = 0) = 0;
 
     // Rasterization (dynamic rendering; attachments must be in RenderTarget / DepthWrite).
     virtual void beginRendering(const RenderingDesc& desc) = 0;

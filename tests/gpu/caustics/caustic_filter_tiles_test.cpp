@@ -1,0 +1,173 @@
+// The caustic filter's tile list (docs/caustics.md "Filter", "Tiles"): the filter runs only on the 8x8
+// tiles that received photons this frame or still keep history, dispatched indirectly over the list. The
+// counts here are exact (the list is a pure function of which pixels got photons and of the tile state),
+// so the checks are equalities, not noise bounds.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "caustic_harness.h"
+#include "gpu_test.h"
+#include "caustics/scene/builtin_scenes.h"
+
+namespace caustics::test {
+namespace {
+
+constexpr uint32_t kSize = 96;
+
+// The filter test's glass ball (caustic_filter_test.cpp): its focal spot lies on the floor beside it.
+scene::Scene ballScene() {
+    scene::AnalyticSceneDesc d;
+    d.radius = 0.5f;
+    d.tessellation = 96;
+    d.lightDirection = glm::normalize(glm::vec3(0.6f, -1.0f, 0.0f));
+    d.height = 0.75f * -d.lightDirection.y;
+    return scene::makeGlassSphereScene(d);
+}
+
+scene::Camera towardsTheSpot() {
+    scene::Camera c;
+    c.eye = {1.6f, 1.0f, 1.2f};
+    c.target = {0.35f, 0.0f, 0.0f};
+    c.verticalFovRadians = glm::radians(30.0f);
+    return c;
+}
+
+// The same eye turned away from the ball, to the floor 3-4 m off. Stray photons (reflected inside the
+// ball) land all over the floor at low density: of five such views tried, this one and one other got
+// none at the default seed (the others 1-4 tiles).
+scene::Camera awayFromTheSpot() {
+    scene::Camera c = towardsTheSpot();
+    c.target = {-1.0f, 0.0f, 3.8f};
+    return c;
+}
+
+CausticsSettings settings() {
+    CausticsSettings s;
+    s.mapResolution = 96;
+    s.raysPerTexel = 1.0f;
+    s.secondType = false;
+    s.maxStoredHits = 1u << 10;
+    s.filter = true;
+    return s;
+}
+
+// The tiles holding a pixel with photons in this frame's unfiltered radiance.
+std::set<uint32_t> photonTiles(const CausticRun& r) {
+    std::set<uint32_t> tiles;
+    for (uint32_t y = 0; y < r.height; ++y)
+        for (uint32_t x = 0; x < r.width; ++x) {
+            const glm::vec3 c = r.at(r.firstType, x, y) + r.at(r.secondType, x, y);
+            if (c.r > 0.0f || c.g > 0.0f || c.b > 0.0f) tiles.insert((y / 8) * 1000 + x / 8);
+        }
+    return tiles;
+}
+
+// The listed tiles of a first frame: those with photons and their 8 neighbours (the a-trous passes
+// spread a photon's radiance into the next tile; tile_list.comp).
+std::set<uint32_t> dilated(const std::set<uint32_t>& tiles, uint32_t tilesX, uint32_t tilesY) {
+    std::set<uint32_t> out;
+    for (uint32_t t : tiles)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int x = int(t % 1000) + dx, y = int(t / 1000) + dy;
+                if (x >= 0 && y >= 0 && x < int(tilesX) && y < int(tilesY)) out.insert(uint32_t(y) * 1000 + uint32_t(x));
+            }
+    return out;
+}
+
+size_t nonZeroPixels(const std::vector<glm::vec3>& img) {
+    size_t n = 0;
+    for (const glm::vec3& c : img) n += (c.r != 0.0f || c.g != 0.0f || c.b != 0.0f) ? 1 : 0;
+    return n;
+}
+
+// Pixels outside `tiles` that are not black.
+size_t nonZeroOutside(const CausticRun& r, const std::set<uint32_t>& tiles) {
+    size_t n = 0;
+    for (uint32_t y = 0; y < r.height; ++y)
+        for (uint32_t x = 0; x < r.width; ++x)
+            if (!tiles.count((y / 8) * 1000 + x / 8) && r.at(r.radiance, x, y) != glm::vec3(0.0f)) ++n;
+    return n;
+}
+
+class CausticFilterTiles : public GpuTest {};
+
+// First frame (no history): exactly the tiles with photons and their neighbours are listed, and the
+// filtered image is zero outside them (no pass wrote there; caustics.radiance keeps the resolve's zeros).
+TEST_F(CausticFilterTiles, FirstFrameListsExactlyTheTilesWithPhotonsAndTheirNeighbours) {
+    auto run = runCaustics(*device, ballScene(), towardsTheSpot(), kSize, kSize, settings());
+    ASSERT_TRUE(run) << run.message();
+    const CausticRun& r = run.value();
+    const std::set<uint32_t> photons = photonTiles(r), expected = dilated(photons, kSize / 8, kSize / 8);
+    std::printf("[ measured ] %u of %u tiles listed, %zu with photons\n", r.filterTiles, (kSize / 8) * (kSize / 8),
+                photons.size());
+    ASSERT_GT(photons.size(), 0u);
+    EXPECT_LT(expected.size(), size_t(kSize / 8) * (kSize / 8)) << "the caustic covers the whole view: no skip to test";
+    EXPECT_EQ(r.filterTiles, uint32_t(expected.size()));
+    EXPECT_EQ(nonZeroOutside(r, expected), 0u);
+    EXPECT_GT(nonZeroPixels(r.radiance), 0u);
+}
+
+// An empty view (no photon reaches a visible pixel) costs no filter work: no tile listed, nothing
+// written, no history read. After 8 frames of the caustic in view, the camera turns away: the history
+// reprojects off screen, so none of it is carried; only the stray photons of that frame (if any: the
+// frame index changes the samples) list their tiles.
+TEST_F(CausticFilterTiles, EmptyViewListsNoTileAndWritesNothing) {
+    auto fresh = runCaustics(*device, ballScene(), awayFromTheSpot(), kSize, kSize, settings());
+    ASSERT_TRUE(fresh) << fresh.message();
+    ASSERT_EQ(photonTiles(fresh.value()).size(), 0u) << "photons landed in the empty view";
+    EXPECT_EQ(fresh.value().filterTiles, 0u);
+    EXPECT_EQ(nonZeroPixels(fresh.value().radiance), 0u);
+
+    std::vector<scene::Camera> cameras(8, towardsTheSpot());
+    cameras.push_back(awayFromTheSpot());
+    auto turned = runCaustics(*device, ballScene(), cameras, kSize, kSize, settings());
+    ASSERT_TRUE(turned) << turned.message();
+    const CausticRun& r = turned.value();
+    const std::set<uint32_t> stray = dilated(photonTiles(r), kSize / 8, kSize / 8);
+    std::printf("[ measured ] turned away: %u tiles listed, %zu for stray photons\n", r.filterTiles, stray.size());
+    EXPECT_EQ(r.filterTiles, uint32_t(stray.size()));
+    EXPECT_EQ(nonZeroOutside(r, stray), 0u);
+}
+
+// A tile keeps its history filterMaxHistory frames after its last photon, then drops out of the list
+// and reads as zero. The light goes out after 4 lit frames (filterMaxHistory 4): 3 dark frames later the
+// history still shows (tiles listed, light in the image), 4 dark frames later nothing is listed or shown.
+TEST_F(CausticFilterTiles, HistoryIsKeptFilterMaxHistoryFramesAfterTheLastPhoton) {
+    const scene::Scene s = ballScene();
+    CausticsSettings st = settings();
+    st.filterMaxHistory = 4;
+    auto run = [&](uint32_t darkFrames) {
+        std::vector<std::vector<scene::Light>> lights(4, s.lights);
+        lights.insert(lights.end(), darkFrames, std::vector<scene::Light>{});
+        const std::vector<scene::Camera> cameras(lights.size(), towardsTheSpot());
+        return runCaustics(*device, s, cameras, kSize, kSize, st, 3, lights);
+    };
+    auto three = run(3), four = run(4);
+    ASSERT_TRUE(three) << three.message();
+    ASSERT_TRUE(four) << four.message();
+    EXPECT_EQ(photonTiles(three.value()).size(), 0u);
+    EXPECT_GT(three.value().filterTiles, 0u);
+    EXPECT_GT(nonZeroPixels(three.value().radiance), 0u);
+    EXPECT_EQ(four.value().filterTiles, 0u);
+    EXPECT_EQ(nonZeroPixels(four.value().radiance), 0u);
+}
+
+// Temporal only (atrousIterations 0): caustics.filterOutput copies the temporal result over the listed
+// tiles. With no history the first frame's temporal result is that frame, so the output is the unfiltered
+// frame exactly, inside the listed tiles and (zeros) outside.
+TEST_F(CausticFilterTiles, TemporalOnlyFirstFrameIsTheUnfilteredFrame) {
+    CausticsSettings st = settings();
+    st.atrousIterations = 0;
+    auto run = runCaustics(*device, ballScene(), towardsTheSpot(), kSize, kSize, st);
+    ASSERT_TRUE(run) << run.message();
+    const CausticRun& r = run.value();
+    size_t differ = 0;
+    for (size_t i = 0; i < r.radiance.size(); ++i) differ += r.radiance[i] != r.firstType[i] + r.secondType[i] ? 1 : 0;
+    EXPECT_EQ(differ, 0u);
+    EXPECT_GT(nonZeroPixels(r.radiance), 0u);
+}
+
+}  // namespace
+}  // namespace caustics::test
