@@ -205,6 +205,7 @@ TEST_F(CausticLayersGpu, PointLightRangePutsNoCausticBeyondIt) {
     point.intensity = 20.0f;
     const float range = 2.7f;
     CausticsSettings s = layerSettings();
+    s.secondType = true;   // the forward pass stores its diffuse hits only for the second type's gather
     auto beyond = [&](const CausticRun& r) {
         uint32_t n = 0, lit = 0;
         for (const CausticHit& h : r.hits) {
