@@ -33,8 +33,8 @@ struct GraphMemory {
 
 // The module's frame graph at width x height, built and compiled against the device's memory
 // requirements; never executed.
-Result<GraphMemory> frameGraphMemory(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
-    rg::RenderGraph graph;
+Status compileFrameGraph(rg::RenderGraph& graph, rhi::IDevice& device, CausticsModule& module, uint32_t width,
+                         uint32_t height) {
     FrameInputs in;
     in.camera = cameraViewMatrices(scene::Camera{}, width, height);
     in.width = width;
@@ -42,7 +42,13 @@ Result<GraphMemory> frameGraphMemory(rhi::IDevice& device, CausticsModule& modul
     CAUSTICS_TRY(FrameOutputs out, module.addPasses(graph, in));
     graph.markOutput(out.display, rhi::ResourceState::CopySource);
     graph.markOutput(out.hdr, rhi::ResourceState::CopySource);
-    CAUSTICS_CHECK(graph.compile(rg::DeviceMemorySizer(device)));
+    return graph.compile(rg::DeviceMemorySizer(device));
+}
+
+// Its memory: the aliased heap and the heap-placed transients.
+Result<GraphMemory> frameGraphMemory(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
+    rg::RenderGraph graph;
+    CAUSTICS_CHECK(compileFrameGraph(graph, device, module, width, height));
     const rg::CompiledPlan& plan = *graph.plan();
     GraphMemory m;
     m.heap = plan.heapSize;
@@ -125,14 +131,7 @@ Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& mod
 Result<std::vector<MemoryEntry>> moduleFrameReport(rhi::IDevice& device, CausticsModule& module, uint32_t width,
                                                    uint32_t height) {
     rg::RenderGraph graph;
-    FrameInputs in;
-    in.camera = cameraViewMatrices(scene::Camera{}, width, height);
-    in.width = width;
-    in.height = height;
-    CAUSTICS_TRY(FrameOutputs out, module.addPasses(graph, in));
-    graph.markOutput(out.display, rhi::ResourceState::CopySource);
-    graph.markOutput(out.hdr, rhi::ResourceState::CopySource);
-    CAUSTICS_CHECK(graph.compile(rg::DeviceMemorySizer(device)));
+    CAUSTICS_CHECK(compileFrameGraph(graph, device, module, width, height));
     std::vector<MemoryEntry> report = module.memoryReport();
     appendFrameMemory(graph, report);
     return report;
