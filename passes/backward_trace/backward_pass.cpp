@@ -89,7 +89,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
     rg::RgBuffer gatherGrid;
     if (indirect)
         gatherGrid = addGridFromCountPass(graph, f, "caustics.gatherGrid", kStatStoredHitAttempts,
-                                          f.in->settings.maxStoredHits, kStatSpheres);
+                                          f.hitCapacity, kStatSpheres);
     graph.addPass("caustics.gather", [&](rg::PassBuilder& b) {
         if (indirect) gatherGrid = b.read(gatherGrid, rg::Access::IndirectArgument);
         f.sphereTlas = b.read(f.sphereTlas, rg::Access::AccelStructTrace);
@@ -97,7 +97,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         f.hits = b.read(f.hits, rg::Access::SampledRead);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
         f.secondTypeTarget() = b.write(f.secondTypeTarget(), rg::Access::StorageReadWrite);
-        uint32_t maxHits = f.in->settings.maxStoredHits;
+        uint32_t maxHits = f.hitCapacity;
         CausticFrame h = f;
         return [=](rg::PassContext& ctx) {
             if (*h.sphereCapacity == 0) return;   // the TLAS was not built this frame

@@ -1,6 +1,6 @@
 // caustics.specularPixels: compacts the camera pixels whose surface is specular into a list and counts
-// the backward grid up (shaders/*/backward_trace/specular_pixels.*), so that caustics.backward launches
-// once per specular pixel, as caustics.forward launches once per emitting texel (docs/caustics.md,
+// the backward grid up (shaders/*/backward_trace/specular_pixels.*; the list is cut at the frame's
+// sphere capacity, the count is not), so that caustics.backward launches once per listed specular pixel, as caustics.forward launches once per emitting texel (docs/caustics.md,
 // "Second-type cost"). It also chooses the frame's sphere TLAS capacity (caustics/sphere_capacity.h) and zeroes
 // the instance slots below it: the ones the backward pass leaves unwritten stay inactive (a zero
 // acceleration-structure reference is an inactive instance in Vulkan and DXR).
@@ -9,11 +9,11 @@
 namespace caustics {
 
 void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
-    const uint64_t pixels = uint64_t(f.width) * f.height;
     graph.addPass("caustics.specularPixels", [&](rg::PassBuilder& b) {
         rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
         rg::RgTexture optics = b.read(f.in->gbuffer.optics, rg::Access::SampledRead);
-        f.specularPixels = b.write(b.createBuffer("caustics.specularPixels", rhi::BufferDesc().setByteSize(pixels * 4)
+        // As many entries as sphere slots: a pixel past the capacity gets no sphere, listed or not.
+        f.specularPixels = b.write(b.createBuffer("caustics.specularPixels", rhi::BufferDesc().setByteSize(uint64_t(std::max(f.sphereAllocation, 1u)) * 4)
                                                                                   .setUsage(rhi::BufferUsage::Storage)
                                                                                   .setDebugName("caustics.specularPixels")),
                                    rg::Access::StorageWrite);

@@ -19,12 +19,15 @@ uint32_t sphereTlasCapacity(std::optional<uint32_t> earlierCount, uint32_t pixel
     return uint32_t(std::min<uint64_t>(std::max<uint64_t>(rounded, kMinSphereCapacity), pixels));
 }
 
-uint32_t initialSphereAllocation(uint32_t pixels) {
-    return std::min(pixels, std::max(kMinSphereAllocation, pixels / kInitialSphereFractionDivisor));
+uint32_t initialSphereAllocation(uint32_t pixels, double specularCoverage) {
+    const double seen = std::clamp(specularCoverage, 0.0, 1.0) * kSpecularCoverageMargin * double(pixels);
+    const uint32_t estimate = uint32_t(std::min(seen, double(pixels)));
+    const uint32_t bucketed = estimate == 0 ? 0 : sphereTlasCapacity(uint32_t(estimate / kSphereCapacityHeadroom), pixels);
+    return std::min(pixels, std::max(kMinSphereAllocation, bucketed));
 }
 
-uint32_t grownSphereAllocation(uint32_t allocated, uint32_t wanted, uint32_t pixels) {
-    return std::max({allocated, initialSphereAllocation(pixels), std::min(wanted, pixels)});
+uint32_t grownSphereAllocation(uint32_t allocated, uint32_t wanted, uint32_t initial, uint32_t pixels) {
+    return std::max({allocated, std::min(initial, pixels), std::min(wanted, pixels)});
 }
 
 void prepareSphereBudget(CausticFrame& f) {
@@ -35,7 +38,7 @@ void prepareSphereBudget(CausticFrame& f) {
         auto buffer = f.res->device->createBuffer(rhi::BufferDesc().setByteSize(4).setUsage(rhi::BufferUsage::CopyDest)
                                                       .setMemory(rhi::MemoryType::Readback)
                                                       .setDebugName("caustics.sphereCountReadback"));
-        if (buffer) slot.buffer = buffer.value();   // without it every frame builds over W x H
+        if (buffer) slot.buffer = buffer.value();   // without it every frame builds over its allocation
     }
     f.sphereReadback = &slot;
     // The slots this frame's sphere list, instances and TLAS build have (ensureSizeResources sized the
@@ -66,7 +69,8 @@ void addSphereCountReadbackPass(rg::RenderGraph& graph, CausticFrame& f) {
         const uint32_t width = f.width, height = f.height;
         return [=](rg::PassContext& ctx) {
             if (!readback->buffer) return;
-            ctx.cmd().copyBuffer(readback->buffer, 0, ctx.buffer(stats), uint64_t(kStatSpheres) * 4, 4);
+            // Specular pixels, not spheres: the list is cut at the capacity, the count is not.
+            ctx.cmd().copyBuffer(readback->buffer, 0, ctx.buffer(stats), uint64_t(kStatSpecularPixels) * 4, 4);
             readback->width = width;
             readback->height = height;
             readback->recorded = true;

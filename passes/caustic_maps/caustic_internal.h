@@ -60,7 +60,7 @@ struct CausticResources::Impl {
     uint32_t frameSlot = 0;
 
     Status ensureScenePipelines(const rhi::BindingLayoutHandle& sceneLayout);
-    Status ensureSizeResources(uint32_t width, uint32_t height, uint32_t frameSlot);
+    Status ensureSizeResources(uint32_t pixels, uint32_t initialSphereAllocation, uint32_t frameSlot);
     Status ensureHistory(CausticViewHistory& history, uint32_t width, uint32_t height);
     // Binding set for this frame (kept alive); null after logging the error.
     rhi::BindingSetHandle makeSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
@@ -85,6 +85,9 @@ struct CausticFrame {
     // The sphere TLAS capacity of this frame, chosen when the graph executes (caustics/sphere_capacity.h).
     std::shared_ptr<uint32_t> sphereCapacity;
     uint32_t sphereAllocation = 0;   // slots of this frame's sphere list and instance buffer
+    // Records of caustics.hits: maxStoredHits, at most the forward pass's launches (one hit each; 0
+    // without the second type, which alone reads them).
+    uint32_t hitCapacity = 0;
     SphereCountReadback* sphereReadback = nullptr;   // this view's and slot's
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereTlas;

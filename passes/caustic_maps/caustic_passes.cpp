@@ -84,7 +84,7 @@ uint64_t forwardLaunchBound(const CausticsSettings& s, const CausticMapPlan& pla
 // 2^30 is the smallest maxRayDispatchInvocationCount Vulkan allows and D3D12's DispatchRays limit;
 // every sphere of the second type is one TLAS instance, so the first sphere allocation
 // (caustics/sphere_capacity.h) must fit maxInstanceCount (growth stops at it).
-Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan) {
+Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan, double specularCoverage) {
     constexpr uint64_t kMaxRayLaunches = 1ull << 30;
     const uint64_t launches = forwardLaunchBound(in.settings, plan);
     if (launches > kMaxRayLaunches)
@@ -95,10 +95,10 @@ Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& pla
                          " ray launches, over the 2^30 a dispatch may have; lower mapResolution, raysPerTexel or "
                          "photonsPerFrame");
     const uint64_t pixels = uint64_t(in.gbuffer.width) * in.gbuffer.height;
-    const uint64_t slots = pixels > UINT32_MAX ? pixels : initialSphereAllocation(uint32_t(pixels));
+    const uint64_t slots = pixels > UINT32_MAX ? pixels : initialSphereAllocation(uint32_t(pixels), specularCoverage);
     const uint64_t maxInstances = in.device ? in.device->capabilities().maxInstanceCount : 0;
     if (in.settings.secondType && maxInstances != 0 && slots > maxInstances)
-        return makeError("addCausticPasses: secondType's first sphere allocation (a sixteenth of the pixels) at " +
+        return makeError("addCausticPasses: secondType's first sphere allocation (the specular surfaces in view) at " +
                          std::to_string(in.gbuffer.width) + "x" + std::to_string(in.gbuffer.height) + " is " +
                          std::to_string(slots) + " instances, over the device's maxInstanceCount " +
                          std::to_string(maxInstances) + "; lower the resolution or turn secondType off");
@@ -123,13 +123,18 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     planOptions.view = &view;
     planOptions.receiverReach = in.settings.causticReceiverReach;
     planOptions.photons = in.photonsPerFrame ? *in.photonsPerFrame : in.settings.photonsPerFrame;
-    CausticMapPlan plan = planCausticMaps(*in.scene, computeSpecularBounds(*in.scene), planOptions);
-    CAUSTICS_CHECK(checkDeviceLimits(in, plan));
+    const SpecularBounds bounds = computeSpecularBounds(*in.scene);
+    CausticMapPlan plan = planCausticMaps(*in.scene, bounds, planOptions);
+    // What the camera sees of the specular surfaces sizes the second type's first allocation.
+    const double specularCoverage = in.settings.secondType ? imageCoverageSum(view, bounds.instanceSpheres, bounds.instanceLo, bounds.instanceHi) : 0.0;
+    CAUSTICS_CHECK(checkDeviceLimits(in, plan, specularCoverage));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
     res->frameSlot = in.frameIndex % uint32_t(res->frameSets.size());
     res->frameSets[res->frameSlot].clear();
     res->retiredSphereTlas[res->frameSlot].clear();
-    CAUSTICS_CHECK(res->ensureSizeResources(in.gbuffer.width, in.gbuffer.height, res->frameSlot));
+    const uint32_t pixels = in.gbuffer.width * in.gbuffer.height;
+    if (in.settings.secondType)
+        CAUSTICS_CHECK(res->ensureSizeResources(pixels, initialSphereAllocation(pixels, specularCoverage), res->frameSlot));
     CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
     if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
 
@@ -198,13 +203,19 @@ std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, c
                            " cd/m^2 this frame): the pre-exposure (CausticsSettings::exposure x Scene::exposure) is "
                            "too high for this light; lower it (docs/caustics.md, \"Fixed point\")");
     }
-    if (stats.size() > kStatSphereCapacity && stats[kStatSpheresDropped] > 0)
-        warnings.push_back(std::to_string(stats[kStatSpheresDropped]) +
-                           " second-type spheres dropped this frame, the sphere TLAS grows next frame: " +
-                           std::to_string(stats[kStatSpheres]) + " specular pixels reached a diffuse surface, the TLAS "
-                           "held " + std::to_string(stats[kStatSphereCapacity]) +
-                           " (sized from the sphere count of the last frame in the same frame-in-flight slot; "
-                           "docs/caustics.md, \"Second-type cost\")");
+    if (stats.size() > kStatSphereCapacity) {
+        // The specular pixel list is cut at the capacity, so pixels past it get no sphere; spheres past it
+        // (none while one launch makes at most one) would be counted in kStatSpheresDropped.
+        const uint32_t specular = stats[kStatSpecularPixels], capacity = stats[kStatSphereCapacity];
+        const uint32_t dropped = stats[kStatSpheresDropped] + (specular > capacity ? specular - capacity : 0u);
+        if (dropped > 0)
+            warnings.push_back(std::to_string(dropped) + " of " + std::to_string(specular) +
+                               " specular pixels got no second-type sphere this frame, the sphere structures grow "
+                               "next frame: they held " + std::to_string(capacity) +
+                               " (sized from the specular pixel count of the last frame in the same "
+                               "frame-in-flight slot, or the specular surfaces in view; docs/caustics.md, "
+                               "\"Second-type cost\")");
+    }
     return warnings;
 }
 

@@ -157,13 +157,12 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     return okStatus();
 }
 
-Status CausticResources::Impl::ensureSizeResources(uint32_t width, uint32_t height, uint32_t slot) {
+Status CausticResources::Impl::ensureSizeResources(uint32_t pixels, uint32_t initialAllocation, uint32_t slot) {
     rhi::IDevice& d = *device;
-    const uint32_t pixels = width * height;
-    // Slots by the counts (caustics/sphere_capacity.h), not one instance per pixel: 2.07 M instances at
-    // 1080p were the largest persistent allocation (docs/caustics.md, "Memory").
+    // Slots by the specular surfaces in view and the counts (caustics/sphere_capacity.h), not one instance
+    // per pixel: 2.07 M instances at 1080p were the largest persistent allocation (docs/caustics.md, "Memory").
     const uint32_t maxInstances = d.capabilities().maxInstanceCount;
-    uint32_t target = grownSphereAllocation(tlasCapacity, sphereAllocationWanted, pixels);
+    uint32_t target = grownSphereAllocation(tlasCapacity, sphereAllocationWanted, initialAllocation, pixels);
     if (maxInstances != 0) target = std::max(tlasCapacity, std::min(target, maxInstances));   // checkDeviceLimits
     sphereAllocationWanted = 0;
     if (!sphereTlas || target > tlasCapacity) {

@@ -27,8 +27,10 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.owners = b.read(f.owners, rg::Access::SampledRead);
         // Only the second type's gather reads the hits: without it the pass stores none, into a
         // one-record buffer the binding needs (docs/caustics.md, "Memory"), and exports no hit buffer.
+        // A launch stores at most one hit, so the launch bound caps the buffer (docs/caustics.md, "Memory").
         const bool storeHits = s.secondType;
-        const uint32_t maxStoredHits = storeHits ? s.maxStoredHits : 0u;
+        f.hitCapacity = storeHits ? uint32_t(std::min<uint64_t>(s.maxStoredHits, forwardLaunchBound(s, f.plan))) : 0u;
+        const uint32_t maxStoredHits = f.hitCapacity;
         f.hits = b.write(b.createBuffer("caustics.hits", rhi::BufferDesc()
                                                              .setByteSize(uint64_t(std::max(maxStoredHits, 1u)) * sizeof(CausticHit))
                                                              .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::CopySource)

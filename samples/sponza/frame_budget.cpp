@@ -94,14 +94,15 @@ uint64_t FrameMemory::persistentBytes(rhi::IDevice& device, uint32_t width, uint
     if (s.causticsEnabled && s.filter)   // the view's filter history (caustic_resources.cpp ensureHistory)
         bytes += 2 * texture(rhi::Format::RGBA32_FLOAT) + texture(rhi::Format::R32_FLOAT) +
                  texture(rhi::Format::RGBA16_FLOAT) + texture(rhi::Format::R32_UINT);
-    // The sphere TLAS's first allocation at this size (caustics/sphere_capacity.h; it grows with the counts).
-    if (s.causticsEnabled && s.secondType) bytes += kSphereInstanceBytes * initialSphereAllocation(width * height);
+    // The sphere TLAS's largest allocation at this size (caustics/sphere_capacity.h: it follows the
+    // specular surfaces in view, which may cover every pixel).
+    if (s.causticsEnabled && s.secondType) bytes += kSphereInstanceBytes * initialSphereAllocation(width * height, 1.0);
     return bytes;
 }
 
 uint64_t FrameMemory::heapBytes(uint32_t width, uint32_t height) const {
-    // Linear: past kMinSphereAllocation pixels the sphere list and instances stop growing per pixel
-    // (caustics/sphere_capacity.h), so this over-estimates there, on the safe side for a refusal.
+    // Linear: past kMinSphereAllocation pixels the sphere list and instances follow the specular
+    // surfaces in view, not the pixels (caustics/sphere_capacity.h), so this over-estimates there.
     return uint64_t(std::ceil(double(fixedBytes) + heapBytesPerPixel * double(width) * double(height)));
 }
 
@@ -110,6 +111,9 @@ uint64_t FrameMemory::bytes(rhi::IDevice& device, uint32_t width, uint32_t heigh
 }
 
 Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& module) {
+    // Both under kMinSphereAllocation pixels (caustics/sphere_capacity.h), where the second type's sphere
+    // list and instances take a slot per pixel like the images: the fit is exact there and over-estimates
+    // past it, where they follow the specular surfaces in view (the safe side for a refusal).
     constexpr uint32_t kSmall[2][2] = {{64, 48}, {128, 96}};
     GraphMemory graph[2];
     for (int i = 0; i < 2; ++i) {

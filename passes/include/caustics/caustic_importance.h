@@ -9,6 +9,7 @@
 // the image that sphere of receivers covers: photons are spent per covered pixel, so every visible
 // caustic gets about the same photons per pixel, whatever its distance and the level's extent.
 #include <cstdint>
+#include <span>
 
 #include <glm/glm.hpp>
 
@@ -32,5 +33,20 @@ glm::vec4 causticReceiverSphere(glm::vec4 cluster, float reach);
 // planes or behind the eye, 1 with the eye inside it; else its projected disk's area over the image's,
 // clamped to 1 (conservative at the image border, where part of the disk is off screen).
 float viewCoverage(const CausticView& view, glm::vec4 sphere);
+
+// The part of the image the sphere's image covers, in [0, 1], exactly (the projected ellipse off the
+// view axis, where viewCoverage's disk is smaller): an upper bound of the pixels an object inside the
+// sphere covers, clamped at the image border as viewCoverage is.
+float imageCoverage(const CausticView& view, glm::vec4 sphere);
+
+// The part of the image the screen rectangle around a world box's projected corners covers, clipped to
+// the image; 1 when a corner lies at or behind the eye. Also an upper bound of an object's pixels.
+float imageCoverageOfBox(const CausticView& view, glm::vec3 lo, glm::vec3 hi);
+
+// Per object the smaller of imageCoverage (its bounding sphere) and imageCoverageOfBox (its box, when
+// `lo`/`hi` hold one), summed (overlaps counted twice) and clamped to 1: what a set of objects covers at
+// most (the second type's first allocation, caustics/sphere_capacity.h).
+double imageCoverageSum(const CausticView& view, std::span<const glm::vec4> spheres, std::span<const glm::vec3> lo = {},
+                        std::span<const glm::vec3> hi = {});
 
 }  // namespace caustics

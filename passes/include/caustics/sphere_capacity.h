@@ -1,16 +1,18 @@
 #pragma once
 // How many sphere instances caustics.spheres builds its TLAS over (docs/caustics.md, "Second-type
 // cost"). Neither D3D12 nor NVIDIA's Vulkan driver builds an acceleration structure from an instance
-// count in GPU memory, so the CPU chooses the build's instance count: the sphere count of the last
-// frame recorded in the same frame-in-flight slot (read back; the host has waited for that frame before
+// count in GPU memory, so the CPU chooses the build's instance count: the specular pixel count (at
+// most one sphere each) of the last frame recorded in the same frame-in-flight slot (read back; the host has waited for that frame before
 // executing this one, docs/embedding.md "Frames and views"), with headroom, rounded up to a bucket.
 // Spheres past it are dropped and counted (kStatSpheresDropped, causticStatsWarnings); the count the GPU
 // saw, dropped ones included, sizes the next frame of that slot.
 //
 // The memory follows the counts too (docs/caustics.md, "Memory"): the TLAS, the frame's sphere list and
-// its instance buffer are allocated for initialSphereAllocation(W x H) slots, not W x H, and grow (never
-// shrink) to the capacity a frame asked for past them, at the next graph built; spheres past the
-// allocation meanwhile are dropped and counted like any other (causticStatsWarnings).
+// its instance buffer and the specular pixel list are allocated for initialSphereAllocation slots (from
+// the specular surfaces in view), not W x H, and grow (never shrink) to the capacity a frame asked for
+// past them, at the next graph built; spheres past the allocation meanwhile are dropped and counted like
+// any other (causticStatsWarnings). The count read back is the specular pixels' (one backward launch,
+// so at most one sphere, each): a list cut at the capacity still shows how much it should hold.
 #include <cstdint>
 #include <optional>
 
@@ -32,16 +34,19 @@ inline constexpr uint32_t kMinSphereCapacity = 64;
 // sphere, so W x H is always enough.
 uint32_t sphereTlasCapacity(std::optional<uint32_t> earlierCount, uint32_t pixels);
 
-// The first allocation at an output size: a sixteenth of the pixels (a view whose specular surfaces
-// cover more grows it within framesInFlight + 1 frames), at least kMinSphereAllocation (2^17: small
-// images, such as the tests' and the sample's memory fit at 320x240, get a slot for every pixel; at
-// 1080p it is the sixteenth's 129,600 rounded up), at most W x H.
-inline constexpr uint32_t kInitialSphereFractionDivisor = 16;
-inline constexpr uint32_t kMinSphereAllocation = 1u << 17;
-uint32_t initialSphereAllocation(uint32_t pixels);
+// The first allocation at an output size follows what the camera sees of the specular surfaces, not
+// W x H: `specularCoverage` is the part of the image their bounding spheres' images cover (the sum of
+// imageCoverage over the specular instances, caustics/caustic_importance.h), an upper bound of the
+// specular pixels but for the sub-pixel rim and overlaps, which kSpecularCoverageMargin covers. The
+// result is rounded up to the capacity's bucket, at least kMinSphereAllocation (2^14: test images up to
+// 128x128 get a slot per pixel), at most W x H. A view whose specular pixels exceed it grows it within
+// framesInFlight + 1 frames, dropping (and counting) the excess meanwhile, as for any jump of the count.
+inline constexpr double kSpecularCoverageMargin = 1.25;
+inline constexpr uint32_t kMinSphereAllocation = 1u << 14;
+uint32_t initialSphereAllocation(uint32_t pixels, double specularCoverage);
 
 // The allocation after a frame asked for `wanted` slots (a sphereTlasCapacity result past the
 // allocation; 0 if none did): grow-only, so views of different sizes sharing it do not reallocate.
-uint32_t grownSphereAllocation(uint32_t allocated, uint32_t wanted, uint32_t pixels);
+uint32_t grownSphereAllocation(uint32_t allocated, uint32_t wanted, uint32_t initial, uint32_t pixels);
 
 }  // namespace caustics

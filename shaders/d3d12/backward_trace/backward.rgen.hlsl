@@ -92,7 +92,7 @@ void main() {
     uint launch = DispatchRaysIndex().x;
     if (launch == 0u) stats.InterlockedAdd(4u * kStatBackwardLaunches, DispatchRaysDimensions().x);
     // Without indirect dispatch the grid is the list's capacity (W x H): launches past its length idle.
-    if (launch >= stats.Load(4u * kStatSpecularPixels)) return;
+    if (launch >= min(stats.Load(4u * kStatSpecularPixels), pc.sphereCapacity)) return;   // the list's length
     uint pixel = specularPixels.Load(4u * launch);
     uint2 p = uint2(pixel % camera.frame.x, pixel / camera.frame.x);
 

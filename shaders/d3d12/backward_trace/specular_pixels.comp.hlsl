@@ -1,5 +1,5 @@
 // caustics.specularPixels (mirror of shaders/vulkan/backward_trace/specular_pixels.comp): the specular
-// camera pixels compacted into a list of pixel indices, and the backward pass's indirect grid.
+// camera pixels compacted into a list of pixel indices (cut at the sphere capacity), and the backward pass's indirect grid.
 #include "backward_trace/sphere_list.hlsli"
 
 Texture2D<uint> gObjectId : register(t0, space0);
@@ -16,8 +16,10 @@ void main(uint3 id : SV_DispatchThreadID) {
     if (all(p == uint2(0u, 0u))) stats.Store(4u * kStatSphereCapacity, pc.sphereCapacity);
     if (p.x >= pc.width || p.y >= pc.height) return;
     if (gObjectId.Load(int3(p, 0)) == 0u || gOptics.Load(int3(p, 0)).w < 0.5f) return;
+    // Every specular pixel is counted, only those below the capacity listed (as the GLSL).
     uint slot;
-    args.InterlockedAdd(0u, 1u, slot);
+    stats.InterlockedAdd(4u * kStatSpecularPixels, 1u, slot);
+    if (slot >= pc.sphereCapacity) return;
     specularPixels.Store(4u * slot, p.y * pc.width + p.x);
-    stats.InterlockedAdd(4u * kStatSpecularPixels, 1u);
+    args.InterlockedAdd(0u, 1u);
 }

@@ -12,6 +12,7 @@
 #include <cstdio>
 
 #include "caustics/caustic_passes.h"
+#include "caustics/sphere_capacity.h"
 #include "caustics/caustics_module.h"
 #include "caustics/render_graph/memory_sizer.h"
 #include "builtin_scene_gpu_test.h"
@@ -105,17 +106,21 @@ TEST_F(MemoryBudget, PeakLineIsTheGraphsAliasedHeap) {
 }
 
 // Memory that follows the work: hits only for the second type, one accumulation buffer and one
-// resolved image unless an AOV shows a type alone, sphere structures for a sixteenth of the pixels.
+// resolved image unless an AOV shows a type alone, sphere structures for the specular surfaces in view.
 TEST_F(MemoryBudget, BuffersFollowWhatTheFrameNeeds) {
     const uint32_t w = 1920, h = 1080;
     CausticsSettings s = gameSettings(false, true);
     const std::vector<MemoryEntry> both = frameReport(s, w, h);
-    EXPECT_EQ(entry(both, "caustics.hits"), uint64_t(s.maxStoredHits) * sizeof(CausticHit));
+    // At most one hit per forward launch: the builtin scene's launch bound (2^19) is under maxStoredHits.
+    EXPECT_LT(entry(both, "caustics.hits"), uint64_t(s.maxStoredHits) * sizeof(CausticHit));
+    EXPECT_GE(entry(both, "caustics.hits"), uint64_t(s.mapResolution) * s.mapResolution * sizeof(CausticHit));
     EXPECT_GT(entry(both, "caustics.firstTypeBuffer"), 0u);
     EXPECT_EQ(entry(both, "caustics.secondTypeBuffer"), 0u) << "one buffer accumulates both types";
     EXPECT_EQ(entry(both, "caustics.secondType"), 0u);
-    EXPECT_GE(entry(both, "caustics.spheres"), uint64_t(w * h / 16) * sizeof(CausticSphere));
-    EXPECT_LT(entry(both, "caustics.spheres"), uint64_t(w * h / 15) * sizeof(CausticSphere));
+    // Sphere slots follow the specular surfaces in view (caustics/sphere_capacity.h): the builtin view's
+    // glass covers about a tenth of the image, so more than the floor and well under a slot per pixel.
+    EXPECT_GT(entry(both, "caustics.spheres"), uint64_t(kMinSphereAllocation) * sizeof(CausticSphere));
+    EXPECT_LT(entry(both, "caustics.spheres"), uint64_t(w * h / 4) * sizeof(CausticSphere));
 
     s.secondType = false;
     const std::vector<MemoryEntry> first = frameReport(s, w, h);

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "caustics/caustic_passes.h"
+#include "caustics/sphere_capacity.h"
 #include "caustics/render_graph/memory_sizer.h"
 #include "caustics/scene/builtin_scenes.h"
 #include "caustics/scene/gpu_scene.h"
@@ -17,9 +18,9 @@ namespace {
 
 class FrameMemory : public BuiltinSceneGpuTest {
 protected:
-    std::unique_ptr<CausticsModule> makeModule(uint32_t maxStoredHits) {
+    std::unique_ptr<CausticsModule> makeModule(uint32_t maxStoredHits, uint32_t mapResolution = 64) {
         CausticsSettings s;
-        s.mapResolution = 64;
+        s.mapResolution = mapResolution;
         s.maxStoredHits = maxStoredHits;
         auto m = CausticsModule::create(device, scene, *gpuScene, s);
         EXPECT_TRUE(m) << m.message();
@@ -42,30 +43,33 @@ protected:
     }
 };
 
-// Measured (lavapipe, the "[ measured ]" lines): the fit from 64x48 and 128x96 predicts the heap at
-// 200x150 0.30 % low and at 320x240 exactly (the aliased heap is per-pixel images plus fixed buffers,
-// each rounded to its alignment). Bound: 2 %, about 6x the measurement; a model without the per-pixel
-// part is 73 % low at 320x240.
+// Measured (lavapipe, the "[ measured ]" lines): under kMinSphereAllocation pixels every per-pixel
+// buffer grows with the image, and the fit from 64x48 and 128x96 predicts the heap at 96x72 and 112x84
+// within the measurement's rounding (each resource is rounded to its alignment). Bound: 2 %. Past it the
+// second type's sphere buffers follow the specular surfaces in view instead (caustics/sphere_capacity.h),
+// so the fit may only over-estimate: a refusal errs on the safe side.
 TEST_F(FrameMemory, FitFromTwoSmallSizesPredictsTheHeapAtLargerOnes) {
     auto module = makeModule(1u << 16);
     ASSERT_TRUE(module);
     auto memory = sample::measureFrameMemory(*device, *module);
     ASSERT_TRUE(memory) << memory.message();
     EXPECT_GT(memory->heapBytesPerPixel, 100.0);   // G-buffer, direct, caustic and filter images
-    for (auto [w, h] : {std::pair{200u, 150u}, std::pair{320u, 240u}}) {
+    for (auto [w, h] : {std::pair{96u, 72u}, std::pair{112u, 84u}, std::pair{320u, 240u}, std::pair{640u, 480u}}) {
         double actual = double(graphHeap(*module, w, h));
         double predicted = double(memory->heapBytes(w, h));
         std::printf("[ measured ] %ux%u: heap %.0f bytes, predicted %.0f (%.3f %%)\n", w, h, actual, predicted,
                     100.0 * (predicted - actual) / actual);
-        EXPECT_NEAR(predicted, actual, 0.02 * actual) << w << "x" << h;
+        if (w * h < kMinSphereAllocation) EXPECT_NEAR(predicted, actual, 0.02 * actual) << w << "x" << h;
+        else EXPECT_GE(predicted, actual) << w << "x" << h;
     }
 }
 
-// The hit buffer (CausticsSettings::maxStoredHits x sizeof(CausticHit)) does not depend on the image:
-// it lands in the fixed part, and is named as its largest piece. Measured: the fixed part grows by
-// exactly the hit buffer's growth (78643200 bytes); bound 1 %.
+// The hit buffer (CausticsSettings::maxStoredHits x sizeof(CausticHit), at most one per forward launch)
+// does not depend on the image: it lands in the fixed part, and is named as its largest piece. 1024^2
+// maps launch past 2^20 photons, so maxStoredHits sizes it. Measured: the fixed part grows by 58.7 MB
+// for the hit buffer's 62.9 MB (the maps alias under the larger buffer).
 TEST_F(FrameMemory, HitBufferIsTheFixedPartsLargestPiece) {
-    auto small = makeModule(1u << 16), large = makeModule(1u << 20);
+    auto small = makeModule(1u << 16, 1024), large = makeModule(1u << 20, 1024);
     ASSERT_TRUE(small && large);
     auto a = sample::measureFrameMemory(*device, *small);
     auto b = sample::measureFrameMemory(*device, *large);
@@ -74,7 +78,12 @@ TEST_F(FrameMemory, HitBufferIsTheFixedPartsLargestPiece) {
     double hits = double((1u << 20) - (1u << 16)) * sizeof(CausticHit);
     std::printf("[ measured ] fixed part %llu -> %llu bytes (hit buffer growth %.0f)\n",
                 static_cast<unsigned long long>(a->fixedBytes), static_cast<unsigned long long>(b->fixedBytes), hits);
-    EXPECT_NEAR(growth, hits, 0.01 * hits);
+    // The larger hit buffer holds the heap at every pass it lives through; the other fixed buffers
+    // (1024^2 maps and emitters) alias under it, so the growth is the hits' less at most those.
+    const double smallHits = double(1u << 16) * sizeof(CausticHit);
+    EXPECT_LE(growth, 1.01 * hits);
+    EXPECT_GE(growth, hits - (double(a->fixedBytes) - smallHits));
+    EXPECT_GE(double(b->fixedBytes), double(1u << 20) * sizeof(CausticHit));
     EXPECT_EQ(b->largestFixed, "caustics.hits");
     EXPECT_EQ(b->largestFixedBytes, uint64_t(1u << 20) * sizeof(CausticHit));
     EXPECT_NEAR(b->heapBytesPerPixel, a->heapBytesPerPixel, 1e-6 * a->heapBytesPerPixel);

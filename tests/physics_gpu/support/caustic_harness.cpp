@@ -123,9 +123,11 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         CAUSTICS_TRY(BufferHandle rbDepth, readbackBuffer(device, pixels * 4));
         CAUSTICS_TRY(BufferHandle rbId, readbackBuffer(device, pixels * 4));
         CAUSTICS_TRY(BufferHandle rbStats, readbackBuffer(device, kStatCount * 4));
-        const uint64_t hitBytes = uint64_t(settings.maxStoredHits) * sizeof(CausticHit);
-        CAUSTICS_TRY(BufferHandle rbHits, readbackBuffer(device, out.hits.valid() ? hitBytes : 4));
-        CAUSTICS_TRY(BufferHandle rbSpheres, readbackBuffer(device, out.spheres.valid() ? pixels * sizeof(CausticSphere) : 4));
+        // The hit and sphere buffers are sized by the frame's work (docs/caustics.md, "Memory"): whole.
+        const uint64_t hitBytes = out.hits.valid() ? graph.buffer(out.hits)->desc().byteSize : 4;
+        const uint64_t sphereBytes = out.spheres.valid() ? graph.buffer(out.spheres)->desc().byteSize : 4;
+        CAUSTICS_TRY(BufferHandle rbHits, readbackBuffer(device, hitBytes));
+        CAUSTICS_TRY(BufferHandle rbSpheres, readbackBuffer(device, sphereBytes));
         const uint64_t planBytes = std::max<uint64_t>(out.plan.maps.size(), 1) * sizeof(CausticLayerPlanGpu);
         CAUSTICS_TRY(BufferHandle rbPlans, readbackBuffer(device, planBytes));
         CAUSTICS_TRY(BufferHandle rbTiles, readbackBuffer(device, 4));
@@ -138,7 +140,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         copy->copyTextureToBuffer(rbId, 0, graph.texture(g.objectId));
         copy->copyBuffer(rbStats, 0, graph.buffer(out.stats), 0, kStatCount * 4);
         if (out.hits.valid()) copy->copyBuffer(rbHits, 0, graph.buffer(out.hits), 0, hitBytes);
-        if (out.spheres.valid()) copy->copyBuffer(rbSpheres, 0, graph.buffer(out.spheres), 0, pixels * sizeof(CausticSphere));
+        if (out.spheres.valid()) copy->copyBuffer(rbSpheres, 0, graph.buffer(out.spheres), 0, sphereBytes);
         if (out.layerPlans.valid()) copy->copyBuffer(rbPlans, 0, graph.buffer(out.layerPlans), 0, planBytes);
         if (out.filterTiles.valid()) copy->copyBuffer(rbTiles, 0, graph.buffer(out.filterTiles), 0, 4);
         copy->end();
@@ -151,7 +153,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         run.objectId = fetch<uint32_t>(device, rbId, pixels);
         run.stats = fetch<uint32_t>(device, rbStats, kStatCount);
         if (out.hits.valid())
-            run.hits = fetch<CausticHit>(device, rbHits, std::min<uint64_t>(run.stats[kStatStoredHitAttempts], settings.maxStoredHits));
+            run.hits = fetch<CausticHit>(device, rbHits, std::min<uint64_t>(run.stats[kStatStoredHitAttempts], hitBytes / sizeof(CausticHit)));
         // The backward pass appends: the first min(spheres, capacity) entries are this frame's.
         if (out.spheres.valid())
             run.spheres = fetch<CausticSphere>(device, rbSpheres, std::min(run.stats[kStatSpheres], run.stats[kStatSphereCapacity]));

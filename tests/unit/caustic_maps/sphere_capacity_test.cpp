@@ -41,22 +41,32 @@ TEST(SphereCapacity, NoEarlierSphereMeansNoBuild) {
     EXPECT_EQ(sphereTlasCapacity(0u, kPixels), 0u);
 }
 
-TEST(SphereAllocation, FirstAllocationIsASixteenthOfThePixelsWithAFloor) {
-    EXPECT_EQ(initialSphereAllocation(kPixels), kMinSphereAllocation);   // 129,600 at 1080p, under the floor
-    EXPECT_EQ(initialSphereAllocation(3840u * 2160u), 3840u * 2160u / 16);
-    EXPECT_EQ(initialSphereAllocation(640u * 480u), kMinSphereAllocation);
-    EXPECT_EQ(initialSphereAllocation(320u * 240u), 320u * 240u) << "small images keep a slot per pixel";
+// The first allocation follows the specular surfaces in view (1.25 x their bounding spheres' coverage,
+// bucketed like a capacity), not the image size.
+TEST(SphereAllocation, FirstAllocationFollowsTheSpecularSurfacesInView) {
+    const uint32_t uhd = 3840u * 2160u;
+    EXPECT_EQ(initialSphereAllocation(kPixels, 0.0), kMinSphereAllocation) << "nothing specular in view: the floor";
+    EXPECT_EQ(initialSphereAllocation(uhd, 0.0), kMinSphereAllocation) << "whatever the image size";
+    EXPECT_EQ(initialSphereAllocation(kPixels, 1.0), kPixels) << "specular everywhere: a slot per pixel";
+    // 1 % of a 4K image: 1.25 x 82,944 = 103,680 slots, rounded up to the bucket (2^14 past 2^16): 114,688.
+    EXPECT_EQ(initialSphereAllocation(uhd, 0.01), 114688u);
+    EXPECT_GE(initialSphereAllocation(uhd, 0.01), uint32_t(kSpecularCoverageMargin * 0.01 * uhd));
+    EXPECT_EQ(initialSphereAllocation(128u * 128u, 0.0), 128u * 128u) << "128x128 test images keep a slot per pixel";
+    EXPECT_EQ(initialSphereAllocation(64u * 64u, 0.5), 64u * 64u) << "at most W x H";
 }
 
 TEST(SphereAllocation, GrowsToTheCapacityAFrameAskedForNeverShrinks) {
-    const uint32_t first = initialSphereAllocation(kPixels);
-    EXPECT_EQ(grownSphereAllocation(first, 0u, kPixels), first);
+    const uint32_t first = initialSphereAllocation(kPixels, 0.01);
+    EXPECT_EQ(grownSphereAllocation(first, 0u, first, kPixels), first);
     const uint32_t wanted = sphereTlasCapacity(400000u, kPixels);
-    EXPECT_EQ(grownSphereAllocation(first, wanted, kPixels), wanted);
-    EXPECT_EQ(grownSphereAllocation(wanted, 1000u, kPixels), wanted) << "never shrinks";
-    EXPECT_EQ(grownSphereAllocation(first, 2 * kPixels, kPixels), kPixels) << "at most W x H";
+    EXPECT_EQ(grownSphereAllocation(first, wanted, first, kPixels), wanted);
+    EXPECT_EQ(grownSphereAllocation(wanted, 1000u, first, kPixels), wanted) << "never shrinks";
+    EXPECT_EQ(grownSphereAllocation(first, 2 * kPixels, first, kPixels), kPixels) << "at most W x H";
+    // More specular surfaces come into view: the allocation grows to their estimate at once.
+    const uint32_t more = initialSphereAllocation(kPixels, 0.2);
+    EXPECT_EQ(grownSphereAllocation(first, 0u, more, kPixels), more);
     // A smaller view sharing it keeps the larger allocation.
-    EXPECT_EQ(grownSphereAllocation(wanted, 0u, 64u * 48u), wanted);
+    EXPECT_EQ(grownSphereAllocation(wanted, 0u, kMinSphereAllocation, 64u * 48u), wanted);
 }
 
 }  // namespace
