@@ -8,9 +8,10 @@ bash scripts/build.sh
 mkdir -p out
 # The picture of the paper's Figure 1: seen from above the lights' side, the glass sphere's focal
 # spot, the water glass's caustic in its shadow and the ring's cardioid; exposure low enough that the
-# caustics do not saturate; 4 unfiltered frames averaged (--accumulate) for a clean still.
+# caustics do not saturate; 32 frames of a still camera through the caustic filter (its history cap:
+# the temporal mean of 32 frames, then the a-trous passes; docs/caustics.md "Filter") for a clean still.
 framing=(--camera -0.10,0.36,0.32,0.04,0,-0.05,42 --exposure 0.3)
-still=(--accumulate 4)
+still=(--frames 32)
 for arg in "$@"; do
     case "$arg" in
         --scene|--sponza|--camera) framing=() ;;       # another scene or view: its own framing

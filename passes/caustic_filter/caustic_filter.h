@@ -1,10 +1,11 @@
 #pragma once
 // Persistent objects of the caustic filter (docs/caustics.md, "Filter"): the pipelines (one set per
-// device). The history is per view: CausticViewHistory (caustics/caustic_passes.h).
+// device) and the sizing of the view's history pool (CausticViewHistory, caustics/caustic_passes.h).
 #include <cstdint>
 #include <initializer_list>
 #include <utility>
 
+#include "caustics/caustic_passes.h"
 #include "caustics/rhi/device.h"
 
 namespace caustics {
@@ -12,10 +13,27 @@ namespace caustics {
 struct CausticFilterPipelines {
     rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout,
         atrousWeightsLayout, atrousLayout, outputLayout;
-    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousWeights, atrous, output;
+    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousWeights, atrous, atrousLast, output;
 
     static Result<CausticFilterPipelines> create(rhi::IDevice& device);
 };
+
+// The filter's pool (shaders/vulkan/caustic_filter/filter_common.glsl, "pool"): 8x8 tiles, one per
+// listed tile, kFilterPoolTilesPerRow to a row of the pool images. A view starts with a quarter of its
+// screen tiles, at least kFilterMinPoolTiles (rounded up to whole rows, at most all of them) and grows, from the tile counts its frames read back, to
+// 1.25 x the tiles a frame wanted (a frame that wants more than the pool holds filters the rest of them
+// not at all and warns).
+inline constexpr uint32_t kFilterPoolTilesPerRow = 128;
+inline constexpr uint32_t kFilterInitialPoolDivisor = 4;
+inline constexpr uint32_t kFilterMinPoolTiles = 1024;   // 2 MiB of history: every view up to 256 x 256
+inline uint32_t filterScreenTiles(uint32_t width, uint32_t height) { return ((width + 7) / 8) * ((height + 7) / 8); }
+inline uint32_t filterPoolWidth() { return kFilterPoolTilesPerRow * 8; }
+inline uint32_t filterPoolHeight(uint32_t poolTiles) { return (poolTiles + kFilterPoolTilesPerRow - 1) / kFilterPoolTilesPerRow * 8; }
+uint32_t initialFilterPoolTiles(uint32_t width, uint32_t height);
+uint32_t grownFilterPoolTiles(uint32_t poolTiles, uint32_t wanted, uint32_t width, uint32_t height);
+
+// Sizes `history` for a width x height view (reallocated, and invalid, when the size or the pool changes).
+Status ensureFilterHistory(CausticResources::Impl& res, CausticViewHistory& history, uint32_t width, uint32_t height);
 
 // Small helpers for the passes' persistent pipelines (defined in caustic_maps/caustic_resources.cpp).
 Result<rhi::BindingLayoutHandle> makeBindingLayout(rhi::IDevice& device,

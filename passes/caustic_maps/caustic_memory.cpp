@@ -26,13 +26,24 @@ void appendCausticMemory(CausticResources& resources, std::vector<MemoryEntry>& 
 }
 
 void appendHistoryMemory(const CausticViewHistory& history, const std::string& prefix, std::vector<MemoryEntry>& out) {
-    // Ping-ponged (caustic_passes.h): both copies, suffixed 0 and 1.
+    // Ping-ponged (caustic_passes.h): both copies, suffixed 0 and 1; the pools and the per-tile maps.
     for (uint32_t i = 0; i < 2; ++i) {
         const std::string n = std::to_string(i);
         addMemoryEntry(out, prefix + ".color" + n, history.color[i]);
-        addMemoryEntry(out, prefix + ".moments" + n, history.moments[i]);
         addMemoryEntry(out, prefix + ".guides" + n, history.guides[i]);
         addMemoryEntry(out, prefix + ".tiles" + n, history.tiles[i]);
+        addMemoryEntry(out, prefix + ".slots" + n, history.slots[i]);
+    }
+    MemoryEntry readbacks{prefix + ".tile_count_readbacks", 0, MemoryKind::Persistent};
+    size_t count = 0;
+    for (const rhi::BufferHandle& b : history.tileCounts)
+        if (b) {
+            readbacks.bytes += b->desc().byteSize;
+            ++count;
+        }
+    if (count > 0) {
+        readbacks.name += " (" + std::to_string(count) + ")";
+        out.push_back(readbacks);
     }
 }
 

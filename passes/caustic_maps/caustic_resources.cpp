@@ -180,25 +180,7 @@ Status CausticResources::Impl::ensureSizeResources(uint32_t pixels, uint32_t ini
 }
 
 Status CausticResources::Impl::ensureHistory(CausticViewHistory& h, uint32_t width, uint32_t height) {
-    if (h.color[0] && h.width == width && h.height == height) return okStatus();
-    auto make = [&](uint32_t w, uint32_t ht, rhi::Format f, std::string name) {
-        return device->createTexture(rhi::TextureDesc().setSize(w, ht).setFormat(f)
-                                         .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage)
-                                         .setDebugName(name));
-    };
-    // Two of each (ping-pong); the tile state has one texel per 8x8 tile (caustic_filter/caustic_filter_pass.cpp).
-    for (uint32_t i = 0; i < 2; ++i) {
-        const std::string n = std::to_string(i);
-        CAUSTICS_TRY(h.color[i], make(width, height, rhi::Format::RGBA32_FLOAT, "caustics.historyColor" + n));
-        CAUSTICS_TRY(h.moments[i], make(width, height, rhi::Format::R32_FLOAT, "caustics.historyMoments" + n));
-        CAUSTICS_TRY(h.guides[i], make(width, height, rhi::Format::RGBA32_UINT, "caustics.historyGuides" + n));
-        CAUSTICS_TRY(h.tiles[i], make((width + 7) / 8, (height + 7) / 8, rhi::Format::R32_UINT, "caustics.historyTiles" + n));
-    }
-    h.parity = 0;
-    h.width = width;
-    h.height = height;
-    h.valid = false;
-    return okStatus();
+    return ensureFilterHistory(*this, h, width, height);   // caustic_filter/filter_history.cpp
 }
 
 rhi::BindingSetHandle CausticResources::Impl::makeSet(rhi::IDevice& d, const rhi::BindingLayoutHandle& l,

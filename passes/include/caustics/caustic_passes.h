@@ -102,18 +102,25 @@ struct CausticSphere {
 };
 static_assert(sizeof(CausticSphere) == 64);
 
-// The filter history of one view (paper 3.4, docs/caustics.md "Filter", "History"): the temporal
-// accumulation (before the spatial passes), its second luminance moment and history length, the packed
-// G-buffer guides it was made with and the tile state. Ping-ponged: [parity] is last frame's, which
-// caustics.temporal reads while it writes [parity ^ 1] (no copy pass). Each view (camera, split-screen
-// half, reflection probe) owns one; sized on first use.
+// The filter history of one view (paper 3.4, docs/caustics.md "Filter", "History", "Memory"): the
+// temporal accumulation (before the spatial passes), its luminance deviation, history length and the
+// G-buffer guides it was made with, kept per listed 8x8 tile in a pool of `poolTiles` tiles (not per
+// screen pixel: the memory follows the caustics' coverage), and per screen tile its state and pool tile.
+// Ping-ponged: [parity] is last frame's, which caustics.temporal reads while it writes [parity ^ 1]
+// (no copy pass). Each view (camera, split-screen half, reflection probe) owns one; sized on first use,
+// the pool grown from the tile counts the view's frames read back.
 struct CausticViewHistory {
-    rhi::TextureHandle color[2];    // RGBA32F accumulated radiance rgb, a history length n (sample count)
-    rhi::TextureHandle moments[2];  // R32F E[l^2] of luminance (E[l] is the luminance of color)
-    rhi::TextureHandle guides[2];   // RGBA32UI depth, its gradient, normal, object id (filter_common.glsl)
+    rhi::TextureHandle color[2];    // pool RGBA16F: rgb mean x preExposure, a per-frame luminance deviation
+    rhi::TextureHandle guides[2];   // pool RG32UI: half depth and n, normal, object id (filter_common.glsl)
     // R32UI per 8x8 pixel tile (docs/caustics.md "Filter", "Tiles"): how many more frames the tile's
-    // history is kept (0: its texels above are stale).
+    // history is kept, and the tile's pool tile (~0u: none, its history is gone).
     rhi::TextureHandle tiles[2];
+    rhi::TextureHandle slots[2];
+    uint32_t poolTiles = 0;         // the pool's capacity in tiles
+    float preExposure[2] = {1.0f, 1.0f};   // the pre-exposure each copy was stored with
+    // Per frame slot: the tiles the frame listed (4 bytes, Readback memory) and whether it was recorded.
+    std::vector<rhi::BufferHandle> tileCounts;
+    std::vector<uint8_t> tileCountRecorded;
     uint32_t parity = 0;
     uint32_t width = 0, height = 0;
     // True once a frame's caustics.temporal pass has been RECORDED (graph execution), so a graph that is

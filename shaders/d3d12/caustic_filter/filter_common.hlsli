@@ -17,40 +17,55 @@ int2 filterTilePixel(uint tile, uint2 texel) {
     return int2(int(tile & 0xFFFFu), int(tile >> 16)) * kFilterTileSize + int2(texel);
 }
 
-// The guides packed once per frame by caustics.temporal (mirror of filter_common.glsl): x linear depth
-// bits, y its gradient (2 x half), z the octahedral normal (2 x snorm16, x in the low half), w object id.
+// The filter's pool (mirror of filter_common.glsl, "pool"): listed tile i owns pool tile i; the slot
+// map names each screen tile's pool tile (kFilterNoSlot: none); kFilterPoolTilesPerRow tiles to a row.
+static const uint kFilterNoSlot = 0xFFFFFFFFu;
+static const uint kFilterPoolTilesPerRow = 128u;
+int2 filterPoolTexel(uint slot, int2 local) {
+    return int2(int(slot % kFilterPoolTilesPerRow), int(slot / kFilterPoolTilesPerRow)) * kFilterTileSize + local;
+}
+int2 filterLocal(int2 p) { return p - (p / kFilterTileSize) * kFilterTileSize; }
+
+// The history guides, one RG32UI texel (mirror of filter_common.glsl): x half depth | half n << 16,
+// y octahedral normal (2 x unorm8) | the object id's low 16 bits << 16.
 struct FilterGuide {
     float depth;
-    float2 gradZ;
+    float historyLength;
     float3 normal;
-    uint id;
+    uint id;   // low 16 bits
 };
-uint filterPackSnorm2x16(float2 v) {
-    int2 q = int2(round(clamp(v, -1.0f, 1.0f) * 32767.0f));
-    return (uint(q.x) & 0xFFFFu) | (uint(q.y) << 16);
-}
-float2 filterUnpackSnorm2x16(uint bits) {
-    int2 q = int2(int(bits << 16) >> 16, int(bits) >> 16);
-    return clamp(float2(q) / 32767.0f, -1.0f, 1.0f);
-}
-uint4 filterPackGuide(float depth, float2 gradZ, float3 n, uint id) {
+uint2 filterPackGuide(float depth, float historyLength, float3 n, uint id) {
     float l1 = abs(n.x) + abs(n.y) + abs(n.z);
     n = l1 > 0.0f ? n / l1 : float3(0.0f, 0.0f, 1.0f);
     float2 e = n.z >= 0.0f ? n.xy : (1.0f - abs(n.yx)) * float2(n.x >= 0.0f ? 1.0f : -1.0f, n.y >= 0.0f ? 1.0f : -1.0f);
-    return uint4(asuint(depth), f32tof16(gradZ.x) | (f32tof16(gradZ.y) << 16), filterPackSnorm2x16(e), id);
+    uint2 q = uint2(round(saturate(e * 0.5f + 0.5f) * 255.0f));
+    return uint2(f32tof16(depth) | (f32tof16(historyLength) << 16), q.x | (q.y << 8) | ((id & 0xFFFFu) << 16));
 }
-FilterGuide filterUnpackGuide(uint4 g) {
-    float2 e = filterUnpackSnorm2x16(g.z);
+FilterGuide filterUnpackGuide(uint2 g) {
+    float2 e = float2(float(g.y & 0xFFu), float((g.y >> 8) & 0xFFu)) / 255.0f * 2.0f - 1.0f;
     float3 n = float3(e, 1.0f - abs(e.x) - abs(e.y));
     float t = max(-n.z, 0.0f);
     n.xy += float2(n.x >= 0.0f ? -t : t, n.y >= 0.0f ? -t : t);
     FilterGuide r;
-    r.depth = asfloat(g.x);
-    r.gradZ = float2(f16tof32(g.y & 0xFFFFu), f16tof32(g.y >> 16));
+    r.depth = f16tof32(g.x & 0xFFFFu);
+    r.historyLength = f16tof32(g.x >> 16);
     r.normal = normalize(n);
-    r.id = g.w;
+    r.id = g.y >> 16;
     return r;
 }
+uint filterGuideId(uint objectId) { return objectId & 0xFFFFu; }
+
+// v rounded to the nearest half, for the RGBA16F pool images (filter_common.glsl says why and how).
+float filterNearestHalf(float v) {
+    if (abs(v) < 6.103515625e-5f) return round(v * 16777216.0f) / 16777216.0f;
+    uint u = asuint(v);
+    return asfloat((u + 0xFFFu + ((u >> 13) & 1u)) & ~0x1FFFu);
+}
+float4 filterNearestHalf(float4 v) {
+    return float4(filterNearestHalf(v.x), filterNearestHalf(v.y), filterNearestHalf(v.z), filterNearestHalf(v.w));
+}
+float2 filterUnpackHalf2(uint bits) { return float2(f16tof32(bits & 0xFFFFu), f16tof32(bits >> 16)); }
+uint filterPackHalf2(float2 v) { return f32tof16(v.x) | (f32tof16(v.y) << 16); }
 
 // B3-spline a-trous kernel taps for |offset| = 0, 1, 2 (1/16 (1 4 6 4 1)).
 static const float kFilterKernel[3] = {3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};

@@ -2,8 +2,8 @@
 // caustic_filter/temporal.comp): bilinear history taps that pass the disocclusion test (object id,
 // depth, normal), blended with weight 1/n, n = history length capped at maxHistory. prevViewProj is
 // Vulkan's clip (y down) and is used as such: no rasterizer here. Dispatched over the tile list; a
-// history texel counts only where last frame's tile state kept it. Reads last frame's ping-ponged
-// history, writes this frame's and packs this frame's guides.
+// history texel exists only where last frame's slot map gave its tile a pool tile. Reads last frame's
+// ping-ponged pool, writes this frame's (pre-exposed half precision) and the depth gradient.
 #include "scene/camera.hlsli"
 #include "caustic_filter/filter_common.hlsli"
 struct CameraBlock { CameraConstants camera; };
@@ -12,25 +12,29 @@ Texture2D<float4> current : register(t1, space0);
 Texture2D<float4> gLinearDepth : register(t2, space0);
 Texture2D<float4> gNormal : register(t3, space0);
 Texture2D<uint> gObjectId : register(t4, space0);
-Texture2D<float4> historyColor : register(t5, space0);     // rgb mean, a history length n
-Texture2D<float4> historyMoments : register(t6, space0);   // r E[l^2]
-Texture2D<uint4> historyGuides : register(t7, space0);
-Texture2D<uint> previousTiles : register(t8, space0);
-ByteAddressBuffer tiles : register(t9, space0);
-RWTexture2D<float4> outColor : register(u10, space0);
-RWTexture2D<float> outMoments : register(u11, space0);
-RWTexture2D<uint4> outGuides : register(u12, space0);
-struct Push { uint historyValid; float maxHistory; };
+Texture2D<float4> historyColor : register(t5, space0);    // pool: rgb mean x pre-exposure, a deviation
+Texture2D<uint2> historyGuides : register(t6, space0);    // pool
+Texture2D<uint> previousSlots : register(t7, space0);
+ByteAddressBuffer tiles : register(t8, space0);
+RWTexture2D<float4> outColor : register(u9, space0);
+RWTexture2D<uint2> outGuides : register(u10, space0);
+RWTexture2D<uint> outGradient : register(u11, space0);
+struct Push { uint historyValid; float maxHistory; float preExposure; float historyScale; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
 static const float kHistoryRejectDeviations = 3.0f;
 static const float kTrustedHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
 
-bool historyKept(int2 q) { return previousTiles.Load(int3(q / kFilterTileSize, 0)) != 0u; }
+// Last frame's pool texel of screen texel q, or (-1, -1) where its tile kept no history.
+int2 historyTexel(int2 q) {
+    uint slot = previousSlots.Load(int3(q / kFilterTileSize, 0));
+    return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, filterLocal(q));
+}
 
-float3 historyMomentsAt(int2 q) {
-    float4 c = historyColor.Load(int3(q, 0));
-    return float3(filterLuminance(c.rgb), historyMoments.Load(int3(q, 0)).r, c.a);
+// E[l], per-frame variance of l, n of a history texel (this frame's pre-exposed units).
+float3 historyMomentsAt(int2 h, FilterGuide g) {
+    float4 c = historyColor.Load(int3(h, 0)) * pc.historyScale;
+    return float3(filterLuminance(c.rgb), c.a * c.a, g.historyLength);
 }
 
 // True when this frame's caustic around p is inconsistent with the history (temporal.comp explains it).
@@ -40,13 +44,16 @@ bool historyRejected(int2 p, int2 nearest, int2 size, uint id) {
         for (int dx = -1; dx <= 1; ++dx) {
             int2 q = p + int2(dx, dy), hq = nearest + int2(dx, dy);
             if (any(min(q, hq) < int2(0, 0)) || any(max(q, hq) >= size)) continue;
-            if (gObjectId.Load(int3(q, 0)) != id || !historyKept(hq) || historyGuides.Load(int3(hq, 0)).w != id)
-                continue;
-            float l = filterLuminance(current.Load(int3(q, 0)).rgb);
-            float3 m = historyMomentsAt(hq);
+            if (gObjectId.Load(int3(q, 0)) != id) continue;
+            int2 ht = historyTexel(hq);
+            if (ht.x < 0) continue;
+            FilterGuide g = filterUnpackGuide(historyGuides.Load(int3(ht, 0)));
+            if (g.id != filterGuideId(id)) continue;
+            float l = filterLuminance(current.Load(int3(q, 0)).rgb * pc.preExposure);
+            float3 m = historyMomentsAt(ht, g);
             c += l;
             h += m.x;
-            v += max(0.0f, m.y - m.x * m.x);
+            v += m.y;
             if (l > 0.0f) quantum = quantum > 0.0f ? min(quantum, l) : l;
         }
     }
@@ -74,7 +81,8 @@ void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
     int2 p = filterTilePixel(tiles.Load(4u * group.x), groupThread.xy);
     int2 size = int2(camera.frame.xy);
     if (p.x >= size.x || p.y >= size.y) return;
-    float3 cur = current.Load(int3(p, 0)).rgb;
+    int2 pool = filterPoolTexel(group.x, int2(groupThread.xy));
+    float3 cur = current.Load(int3(p, 0)).rgb * pc.preExposure;
     float l = filterLuminance(cur);
     float depth = gLinearDepth.Load(int3(p, 0)).r;
     float3 n = gNormal.Load(int3(p, 0)).xyz;
@@ -98,16 +106,16 @@ void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
                 int2 o = int2(i & 1, i >> 1);
                 int2 q = base + o;
                 if (any(q < int2(0, 0)) || any(q >= size)) continue;
-                if (!historyKept(q)) continue;
-                FilterGuide hg = filterUnpackGuide(historyGuides.Load(int3(q, 0)));
-                if (hg.id != objectId) continue;
+                int2 ht = historyTexel(q);
+                if (ht.x < 0) continue;
+                FilterGuide hg = filterUnpackGuide(historyGuides.Load(int3(ht, 0)));
+                if (hg.id != filterGuideId(objectId)) continue;
                 if (abs(hg.depth - clip.w) > tolerance) continue;
                 if (dot(hg.normal, n) < 0.9f) continue;
                 float w = (o.x == 1 ? f.x : 1.0f - f.x) * (o.y == 1 ? f.y : 1.0f - f.y);
-                hColor += w * historyColor.Load(int3(q, 0)).rgb;
+                hColor += w * historyColor.Load(int3(ht, 0)).rgb * pc.historyScale;
                 // Per-tap variance, not the moments (temporal.comp says why).
-                float3 m = historyMomentsAt(q);
-                hMoments += w * float3(m.x, max(0.0f, m.y - m.x * m.x), m.z);
+                hMoments += w * historyMomentsAt(ht, hg);
                 wSum += w;
             }
             bool rejected = wSum > 0.01f && hMoments.z / wSum >= kTrustedHistory &&
@@ -124,7 +132,9 @@ void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
         }
     }
     float2 gradZ = float2(depthSlope(p, int2(1, 0), size, depth, objectId), depthSlope(p, int2(0, 1), size, depth, objectId));
-    outColor[p] = float4(color, historyLength);
-    outMoments[p] = moment2;
-    outGuides[p] = filterPackGuide(depth, gradZ, n, objectId);
+    // The variance leaves as a standard deviation (temporal.comp says why).
+    float lm = filterLuminance(color);
+    outColor[pool] = filterNearestHalf(float4(color, sqrt(max(0.0f, moment2 - lm * lm))));
+    outGuides[pool] = filterPackGuide(depth, historyLength, n, objectId);
+    outGradient[pool] = filterPackHalf2(gradZ);
 }

@@ -1,29 +1,30 @@
 // Variance of the accumulated luminance for the a-trous luminance edge-stopping (mirror of
 // shaders/vulkan/caustic_filter/variance.comp, which explains the model): temporal moments with 4 or
 // more frames of history (max(own, 3x3 mean)), else photon shot noise q l (q: smallest non-zero luminance of this frame in
-// the 7x7 window, l: max(own, 3x3 mean) of the accumulated luminance). Alpha: variance of the mean.
-// Over the listed tiles; a neighbour in an unlisted tile counts as zero.
+// the 7x7 window, l: max(own, 3x3 mean) of the accumulated luminance). Output (pool, pre-exposed):
+// alpha the deviation of the mean. Over the listed tiles; a neighbour without a pool tile counts as zero.
 #include "caustic_filter/filter_common.hlsli"
 Texture2D<float4> current : register(t0, space0);
-Texture2D<float4> temporalColor : register(t1, space0);
-Texture2D<float4> temporalMoments : register(t2, space0);   // r E[l^2]; temporalColor.a is n
+Texture2D<float4> temporalColor : register(t1, space0);    // pool: rgb mean, a per-frame deviation
+Texture2D<uint2> temporalGuides : register(t2, space0);    // pool: n
 Texture2D<uint> gObjectId : register(t3, space0);
-RWTexture2D<float4> outColor : register(u4, space0);
+RWTexture2D<float4> outColor : register(u4, space0);       // pool
 ByteAddressBuffer tiles : register(t5, space0);
-Texture2D<uint> tileState : register(t6, space0);   // 0: a tile no filter pass wrote this frame
-struct Push { int width; int height; };
+Texture2D<uint> slotMap : register(t6, space0);            // this frame's
+struct Push { int width; int height; float preExposure; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
 static const float kTemporalHistory = 4.0f;
 
-bool listed(int2 q) { return tileState.Load(int3(q / kFilterTileSize, 0)) != 0u; }
-
-float3 momentsAt(int2 q) {
-    float4 c = temporalColor.Load(int3(q, 0));
-    return float3(filterLuminance(c.rgb), temporalMoments.Load(int3(q, 0)).r, c.a);
+int2 poolTexel(int2 q) {
+    uint slot = slotMap.Load(int3(q / kFilterTileSize, 0));
+    return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, filterLocal(q));
 }
 
-float temporalVariance(float3 moments) { return max(0.0f, moments.y - moments.x * moments.x); }
+float3 momentsAt(int2 t) {
+    float4 c = temporalColor.Load(int3(t, 0));
+    return float3(filterLuminance(c.rgb), c.a * c.a, filterUnpackGuide(temporalGuides.Load(int3(t, 0))).historyLength);
+}
 
 // 3x3 mean of the neighbours' temporal variance on the same object.
 float localMeanTemporalVariance(int2 p, uint objectId) {
@@ -33,7 +34,8 @@ float localMeanTemporalVariance(int2 p, uint objectId) {
             int2 q = p + int2(dx, dy);
             if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
             if (gObjectId.Load(int3(q, 0)) != objectId) continue;
-            if (listed(q)) sum += temporalVariance(momentsAt(q));
+            int2 t = poolTexel(q);
+            if (t.x >= 0) sum += momentsAt(t).y;
             count += 1.0f;
         }
     }
@@ -44,13 +46,14 @@ float localMeanTemporalVariance(int2 p, uint objectId) {
 void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
     int2 p = filterTilePixel(tiles.Load(4u * group.x), groupThread.xy);
     if (p.x >= pc.width || p.y >= pc.height) return;
-    float3 accumulated = temporalColor.Load(int3(p, 0)).rgb;
-    float3 moments = momentsAt(p);
+    int2 own = filterPoolTexel(group.x, int2(groupThread.xy));
+    float3 accumulated = temporalColor.Load(int3(own, 0)).rgb;
+    float3 moments = momentsAt(own);
     uint objectId = gObjectId.Load(int3(p, 0));
     float n = max(moments.z, 1.0f);
     float variance = 0.0f;
     if (objectId != 0u && n >= kTemporalHistory) {
-        variance = max(temporalVariance(moments), localMeanTemporalVariance(p, objectId));
+        variance = max(moments.y, localMeanTemporalVariance(p, objectId));
     } else if (objectId != 0u) {
         float quantum = 3.0e38f;
         float localSum = 0.0f, localCount = 0.0f;
@@ -59,10 +62,11 @@ void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
                 int2 q = p + int2(dx, dy);
                 if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
                 if (gObjectId.Load(int3(q, 0)) != objectId) continue;
-                float l = filterLuminance(current.Load(int3(q, 0)).rgb);
+                float l = filterLuminance(current.Load(int3(q, 0)).rgb * pc.preExposure);
                 if (l > 0.0f) quantum = min(quantum, l);
                 if (abs(dx) <= 1 && abs(dy) <= 1) {
-                    if (listed(q)) localSum += filterLuminance(temporalColor.Load(int3(q, 0)).rgb);
+                    int2 t = poolTexel(q);
+                    if (t.x >= 0) localSum += filterLuminance(temporalColor.Load(int3(t, 0)).rgb);
                     localCount += 1.0f;
                 }
             }
@@ -70,5 +74,5 @@ void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
         float expected = max(filterLuminance(accumulated), localSum / max(localCount, 1.0f));
         if (quantum < 3.0e38f) variance = quantum * expected;
     }
-    outColor[p] = float4(accumulated, variance / n);
+    outColor[own] = filterNearestHalf(float4(accumulated, sqrt(variance / n)));
 }

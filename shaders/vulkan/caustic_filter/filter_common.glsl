@@ -18,28 +18,58 @@ ivec2 filterTilePixel(uint tile, uvec2 texel) {
     return ivec2(int(tile & 0xFFFFu), int(tile >> 16)) * kFilterTileSize + ivec2(texel);
 }
 
-// The guides, packed once per frame by caustics.temporal into one RGBA32UI texel (docs/caustics.md
-// "Filter", "Guides"): x linear depth (float bits), y its screen-space gradient (2 x half), z the normal
-// (octahedral, 2 x snorm16), w the object id. This frame's a-trous passes read them, the next frame's
-// temporal pass reads them as the history's guides.
+// Where the filter keeps its per-pixel data (docs/caustics.md "Filter", "Memory"): not in full-screen
+// images but in a pool of 8x8 tiles, one per listed tile. The tile at index i of this frame's list
+// (tile_list.comp) owns pool tile i; a per-screen-tile slot map (R32UI) names the pool tile of every
+// screen tile, kFilterNoSlot where none (not listed, or listed past the pool's capacity). The pool is an
+// image kFilterPoolTilesPerRow tiles wide. Last frame's history is found through last frame's map.
+const uint kFilterNoSlot = 0xFFFFFFFFu;
+const uint kFilterPoolTilesPerRow = 128u;
+ivec2 filterPoolTexel(uint slot, ivec2 local) {
+    return ivec2(int(slot % kFilterPoolTilesPerRow), int(slot / kFilterPoolTilesPerRow)) * kFilterTileSize + local;
+}
+ivec2 filterLocal(ivec2 p) { return p - (p / kFilterTileSize) * kFilterTileSize; }
+
+// The history guides, one RG32UI texel (docs/caustics.md "Filter", "History"): x the linear depth and
+// the history length n (2 x half: 11 significant bits, exact integers up to 2048 > kMaxFilterHistory),
+// y the octahedral normal (2 x unorm8) and the object id's low 16 bits. Only the next frame's
+// disocclusion test reads them (1 % depth tolerance, a normal cosine of 0.9, id equality); this
+// frame's a-trous passes read the G-buffer itself at full precision.
 struct FilterGuide {
     float depth;
-    vec2 gradZ;
+    float historyLength;
     vec3 normal;
-    uint id;
+    uint id;   // low 16 bits
 };
-uvec4 filterPackGuide(float depth, vec2 gradZ, vec3 n, uint id) {
+uvec2 filterPackGuide(float depth, float historyLength, vec3 n, uint id) {
     float l1 = abs(n.x) + abs(n.y) + abs(n.z);
     n = l1 > 0.0 ? n / l1 : vec3(0.0, 0.0, 1.0);
     vec2 e = n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-    return uvec4(floatBitsToUint(depth), packHalf2x16(gradZ), packSnorm2x16(e), id);
+    uvec2 q = uvec2(round(clamp(e * 0.5 + 0.5, 0.0, 1.0) * 255.0));
+    return uvec2(packHalf2x16(vec2(depth, historyLength)), q.x | (q.y << 8) | ((id & 0xFFFFu) << 16));
 }
-FilterGuide filterUnpackGuide(uvec4 g) {
-    vec2 e = unpackSnorm2x16(g.z);
+FilterGuide filterUnpackGuide(uvec2 g) {
+    vec2 dn = unpackHalf2x16(g.x);
+    vec2 e = vec2(float(g.y & 0xFFu), float((g.y >> 8) & 0xFFu)) / 255.0 * 2.0 - 1.0;
     vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
     float t = max(-n.z, 0.0);
     n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
-    return FilterGuide(uintBitsToFloat(g.x), unpackHalf2x16(g.y), normalize(n), g.w);
+    return FilterGuide(dn.x, dn.y, normalize(n), g.y >> 16);
+}
+uint filterGuideId(uint objectId) { return objectId & 0xFFFFu; }
+
+// v rounded to the nearest half-precision value, to be written into an RGBA16F pool image: Vulkan lets
+// the image write round towards zero (lavapipe does), which biased every store low by half an ulp on
+// average (0.11 % of the energy after three stores, docs/caustics.md "Memory"); a value that half
+// represents exactly is written exactly under any rounding. In 32-bit arithmetic: the mantissa rounded
+// to half's 10 bits (to nearest, ties to even), below half's smallest normal to multiples of 2^-24.
+float filterNearestHalf(float v) {
+    if (abs(v) < 6.103515625e-5) return round(v * 16777216.0) / 16777216.0;
+    uint u = floatBitsToUint(v);
+    return uintBitsToFloat((u + 0xFFFu + ((u >> 13) & 1u)) & ~0x1FFFu);
+}
+vec4 filterNearestHalf(vec4 v) {
+    return vec4(filterNearestHalf(v.x), filterNearestHalf(v.y), filterNearestHalf(v.z), filterNearestHalf(v.w));
 }
 
 // B3-spline a-trous kernel taps for |offset| = 0, 1, 2 (1/16 (1 4 6 4 1)).

@@ -9,36 +9,44 @@
 // (an unbiased average), then an exponential average with weight 1/maxHistory. The luminance moments
 // (l, l^2) accumulate the same way for the variance estimate. A history that this frame's photons
 // contradict (historyRejected: the caustic moved) is dropped. Dispatched over the tile list (tiles.comp):
-// a history texel counts only where last frame's tile state kept it (elsewhere it is stale). The history
-// is ping-ponged (docs/caustics.md "Filter", "History"): this pass reads last frame's and writes this
-// frame's (the result, before any spatial pass), and packs this frame's guides, so no copy pass follows.
+// a history texel exists only where last frame's slot map gave its tile a pool tile. The history is
+// ping-ponged (docs/caustics.md "Filter", "History"): this pass reads last frame's pool and writes this
+// frame's (the result, before any spatial pass, and its guides), so no copy pass follows; and the depth
+// gradient the a-trous passes use, once per frame. Everything in the pool is pre-exposed half precision.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "scene/camera.glsl"
 #include "caustic_filter/filter_common.glsl"
 layout(set = 0, binding = 0) uniform CameraBlock { CameraConstants camera; };
-layout(set = 0, binding = 1) uniform texture2D current;
+layout(set = 0, binding = 1) uniform texture2D current;          // this frame, unfiltered (screen)
 layout(set = 0, binding = 2) uniform texture2D gLinearDepth;
 layout(set = 0, binding = 3) uniform texture2D gNormal;
 layout(set = 0, binding = 4) uniform utexture2D gObjectId;
-layout(set = 0, binding = 5) uniform texture2D historyColor;     // rgb mean, a history length n
-layout(set = 0, binding = 6) uniform texture2D historyMoments;   // r E[l^2] (E[l] = luminance of the mean)
-layout(set = 0, binding = 7) uniform utexture2D historyGuides;   // filterPackGuide
-layout(set = 0, binding = 8) uniform utexture2D previousTiles;   // 0: the history texels there are stale
-layout(set = 0, binding = 9, std430) readonly buffer TileList { uint tiles[]; };
-layout(set = 0, binding = 10, rgba32f) uniform writeonly image2D outColor;
-layout(set = 0, binding = 11, r32f) uniform writeonly image2D outMoments;
-layout(set = 0, binding = 12, rgba32ui) uniform writeonly uimage2D outGuides;
-layout(push_constant) uniform Push { uint historyValid; float maxHistory; } pc;
+// Last frame's history (pool, filter_common.glsl): rgb mean x last frame's pre-exposure, a the
+// per-frame standard deviation of luminance, same units; the guides hold depth, n, normal, id.
+layout(set = 0, binding = 5) uniform texture2D historyColor;
+layout(set = 0, binding = 6) uniform utexture2D historyGuides;
+layout(set = 0, binding = 7) uniform utexture2D previousSlots;   // last frame's slot map
+layout(set = 0, binding = 8, std430) readonly buffer TileList { uint tiles[]; };
+layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D outColor;     // this frame's, pool
+layout(set = 0, binding = 10, rg32ui) uniform writeonly uimage2D outGuides;   // this frame's, pool
+layout(set = 0, binding = 11, r32ui) uniform writeonly uimage2D outGradient;  // half2 depth slope, pool
+// preExposure: this frame's (the host's exposure, docs/caustics.md "Filter", "Memory"); historyScale:
+// this frame's over last frame's, which the history was stored with.
+layout(push_constant) uniform Push { uint historyValid; float maxHistory; float preExposure; float historyScale; } pc;
 
 const float kHistoryRejectDeviations = 3.0;
 const float kTrustedHistory = 4.0;   // SVGF's threshold for trusting the temporal moments
 
-bool historyKept(ivec2 q) { return texelFetch(previousTiles, q / kFilterTileSize, 0).r != 0u; }
+// Last frame's pool texel of screen texel q, or (-1, -1) where its tile kept no history.
+ivec2 historyTexel(ivec2 q) {
+    uint slot = texelFetch(previousSlots, q / kFilterTileSize, 0).r;
+    return slot == kFilterNoSlot ? ivec2(-1) : filterPoolTexel(slot, filterLocal(q));
+}
 
-// E[l], E[l^2], n of a history texel.
-vec3 historyMomentsAt(ivec2 q) {
-    vec4 c = texelFetch(historyColor, q, 0);
-    return vec3(filterLuminance(c.rgb), texelFetch(historyMoments, q, 0).r, c.a);
+// E[l], per-frame variance of l, n of a history texel (this frame's pre-exposed units).
+vec3 historyMomentsAt(ivec2 h, FilterGuide g) {
+    vec4 c = texelFetch(historyColor, h, 0) * pc.historyScale;
+    return vec3(filterLuminance(c.rgb), c.a * c.a, g.historyLength);
 }
 
 // True when this frame's caustic around p is inconsistent with the history (the caustic moved: a light
@@ -56,13 +64,16 @@ bool historyRejected(ivec2 p, ivec2 nearest, ivec2 size, uint id) {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = p + ivec2(dx, dy), hq = nearest + ivec2(dx, dy);
             if (any(lessThan(min(q, hq), ivec2(0))) || any(greaterThanEqual(max(q, hq), size))) continue;
-            if (texelFetch(gObjectId, q, 0).r != id || !historyKept(hq) || texelFetch(historyGuides, hq, 0).w != id)
-                continue;
-            float l = filterLuminance(texelFetch(current, q, 0).rgb);
-            vec3 m = historyMomentsAt(hq);
+            if (texelFetch(gObjectId, q, 0).r != id) continue;
+            ivec2 ht = historyTexel(hq);
+            if (ht.x < 0) continue;
+            FilterGuide g = filterUnpackGuide(texelFetch(historyGuides, ht, 0).rg);
+            if (g.id != filterGuideId(id)) continue;
+            float l = filterLuminance(texelFetch(current, q, 0).rgb * pc.preExposure);
+            vec3 m = historyMomentsAt(ht, g);
             c += l;
             h += m.x;
-            v += max(0.0, m.y - m.x * m.x);
+            v += m.y;
             if (l > 0.0) quantum = quantum > 0.0 ? min(quantum, l) : l;
         }
     }
@@ -89,7 +100,8 @@ void main() {
     ivec2 p = filterTilePixel(tiles[gl_WorkGroupID.x], gl_LocalInvocationID.xy);
     ivec2 size = ivec2(camera.frame.xy);
     if (p.x >= size.x || p.y >= size.y) return;
-    vec3 cur = texelFetch(current, p, 0).rgb;
+    ivec2 pool = filterPoolTexel(gl_WorkGroupID.x, ivec2(gl_LocalInvocationID.xy));
+    vec3 cur = texelFetch(current, p, 0).rgb * pc.preExposure;
     float l = filterLuminance(cur);
     float depth = texelFetch(gLinearDepth, p, 0).r;
     vec3 n = texelFetch(gNormal, p, 0).xyz;
@@ -112,17 +124,17 @@ void main() {
                 ivec2 o = ivec2(i & 1, i >> 1);
                 ivec2 q = base + o;
                 if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-                if (!historyKept(q)) continue;
-                FilterGuide hg = filterUnpackGuide(texelFetch(historyGuides, q, 0));
-                if (hg.id != id) continue;
+                ivec2 ht = historyTexel(q);
+                if (ht.x < 0) continue;
+                FilterGuide hg = filterUnpackGuide(texelFetch(historyGuides, ht, 0).rg);
+                if (hg.id != filterGuideId(id)) continue;
                 if (abs(hg.depth - clip.w) > tolerance) continue;
                 if (dot(hg.normal, n) < 0.9) continue;
                 float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-                hColor += w * texelFetch(historyColor, q, 0).rgb;
+                hColor += w * texelFetch(historyColor, ht, 0).rgb * pc.historyScale;
                 // Per-tap variance, not the moments: mixing the moments of neighbouring texels would add
                 // their signal difference (a focal spot's edge) to the variance.
-                vec3 m = historyMomentsAt(q);
-                hMoments += w * vec3(m.x, max(0.0, m.y - m.x * m.x), m.z);
+                hMoments += w * historyMomentsAt(ht, hg);
                 wSum += w;
             }
             // The test needs variances from the moments: histories shorter than kTrustedHistory frames
@@ -140,8 +152,12 @@ void main() {
             }
         }
     }
+    // The variance leaves here as a standard deviation: E[l^2] - E[l]^2 cancels in 32 bits, and the
+    // deviation has the range of the radiance, which half precision holds (docs/caustics.md "Memory").
+    float lm = filterLuminance(color);
+    float deviation = sqrt(max(0.0, moment2 - lm * lm));
     vec2 gradZ = vec2(depthSlope(p, ivec2(1, 0), size, depth, id), depthSlope(p, ivec2(0, 1), size, depth, id));
-    imageStore(outColor, p, vec4(color, historyLength));
-    imageStore(outMoments, p, vec4(moment2));
-    imageStore(outGuides, p, filterPackGuide(depth, gradZ, n, id));
+    imageStore(outColor, pool, filterNearestHalf(vec4(color, deviation)));
+    imageStore(outGuides, pool, uvec4(filterPackGuide(depth, historyLength, n, id), 0u, 0u));
+    imageStore(outGradient, pool, uvec4(packHalf2x16(gradZ)));
 }

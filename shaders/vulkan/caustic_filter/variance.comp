@@ -13,30 +13,34 @@
 // (the max keeps a focal spot's own, larger, noise). SVGF's 7x7 sample
 // variance would count a focal spot's own shape as noise and blur it away; shot noise grows only as
 // the square root of the photon count, so a bright spot of many photons keeps its edges.
-// Output alpha: the variance of the accumulated mean, per-frame variance / n. Over the listed tiles;
-// a neighbour in an unlisted tile (no photon, no history kept) counts as zero in the 3x3 means.
+// Output (pool, pre-exposed): rgb the mean, alpha the standard deviation of the accumulated mean,
+// sqrt(per-frame variance / n) (a deviation, not a variance: half precision holds its range). Over the
+// listed tiles; a neighbour in a tile without a pool tile (no photon, no history kept) counts as zero in
+// the 3x3 means.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "caustic_filter/filter_common.glsl"
-layout(set = 0, binding = 0) uniform texture2D current;          // this frame, unfiltered
-layout(set = 0, binding = 1) uniform texture2D temporalColor;    // rgb mean, a n (this frame's history)
-layout(set = 0, binding = 2) uniform texture2D temporalMoments;  // r E[l^2]
+layout(set = 0, binding = 0) uniform texture2D current;          // this frame, unfiltered (screen)
+layout(set = 0, binding = 1) uniform texture2D temporalColor;    // pool: rgb mean, a per-frame deviation
+layout(set = 0, binding = 2) uniform utexture2D temporalGuides;  // pool: n (filterPackGuide)
 layout(set = 0, binding = 3) uniform utexture2D gObjectId;
-layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D outColor;   // pool
 layout(set = 0, binding = 5, std430) readonly buffer TileList { uint tiles[]; };
-layout(set = 0, binding = 6) uniform utexture2D tileState;   // 0: a tile no filter pass wrote this frame
-layout(push_constant) uniform Push { int width; int height; } pc;
+layout(set = 0, binding = 6) uniform utexture2D slotMap;   // this frame's
+layout(push_constant) uniform Push { int width; int height; float preExposure; } pc;
 
 const float kTemporalHistory = 4.0;   // SVGF's threshold for trusting the temporal moments
 
-bool listed(ivec2 q) { return texelFetch(tileState, q / kFilterTileSize, 0).r != 0u; }
-
-// E[l], E[l^2], n at q (E[l] is the luminance of the mean).
-vec3 momentsAt(ivec2 q) {
-    vec4 c = texelFetch(temporalColor, q, 0);
-    return vec3(filterLuminance(c.rgb), texelFetch(temporalMoments, q, 0).r, c.a);
+// This frame's pool texel of screen pixel q, or (-1, -1) where its tile has none.
+ivec2 poolTexel(ivec2 q) {
+    uint slot = texelFetch(slotMap, q / kFilterTileSize, 0).r;
+    return slot == kFilterNoSlot ? ivec2(-1) : filterPoolTexel(slot, filterLocal(q));
 }
 
-float temporalVariance(vec3 moments) { return max(0.0, moments.y - moments.x * moments.x); }
+// E[l], per-frame variance, n at pool texel t (E[l] is the luminance of the mean).
+vec3 momentsAt(ivec2 t) {
+    vec4 c = texelFetch(temporalColor, t, 0);
+    return vec3(filterLuminance(c.rgb), c.a * c.a, filterUnpackGuide(texelFetch(temporalGuides, t, 0).rg).historyLength);
+}
 
 // 3x3 mean of the neighbours' temporal variance on the same object (SVGF prefilters the variance the
 // same way): a pixel's own moments from a few photons per frame estimate its variance poorly.
@@ -47,7 +51,8 @@ float localMeanTemporalVariance(ivec2 p, uint id) {
             ivec2 q = p + ivec2(dx, dy);
             if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
             if (texelFetch(gObjectId, q, 0).r != id) continue;
-            if (listed(q)) sum += temporalVariance(momentsAt(q));
+            ivec2 t = poolTexel(q);
+            if (t.x >= 0) sum += momentsAt(t).y;
             count += 1.0;
         }
     }
@@ -57,13 +62,14 @@ float localMeanTemporalVariance(ivec2 p, uint id) {
 void main() {
     ivec2 p = filterTilePixel(tiles[gl_WorkGroupID.x], gl_LocalInvocationID.xy);
     if (p.x >= pc.width || p.y >= pc.height) return;
-    vec3 accumulated = texelFetch(temporalColor, p, 0).rgb;
-    vec3 moments = momentsAt(p);
+    ivec2 own = filterPoolTexel(gl_WorkGroupID.x, ivec2(gl_LocalInvocationID.xy));
+    vec3 accumulated = texelFetch(temporalColor, own, 0).rgb;
+    vec3 moments = momentsAt(own);
     uint id = texelFetch(gObjectId, p, 0).r;
     float n = max(moments.z, 1.0);
     float variance = 0.0;
     if (id != 0u && n >= kTemporalHistory) {
-        variance = max(temporalVariance(moments), localMeanTemporalVariance(p, id));
+        variance = max(moments.y, localMeanTemporalVariance(p, id));
     } else if (id != 0u) {
         float quantum = 3.0e38;
         float localSum = 0.0, localCount = 0.0;
@@ -72,10 +78,11 @@ void main() {
                 ivec2 q = p + ivec2(dx, dy);
                 if (q.x < 0 || q.y < 0 || q.x >= pc.width || q.y >= pc.height) continue;
                 if (texelFetch(gObjectId, q, 0).r != id) continue;
-                float l = filterLuminance(texelFetch(current, q, 0).rgb);
+                float l = filterLuminance(texelFetch(current, q, 0).rgb * pc.preExposure);
                 if (l > 0.0) quantum = min(quantum, l);
                 if (abs(dx) <= 1 && abs(dy) <= 1) {
-                    if (listed(q)) localSum += filterLuminance(texelFetch(temporalColor, q, 0).rgb);
+                    ivec2 t = poolTexel(q);
+                    if (t.x >= 0) localSum += filterLuminance(texelFetch(temporalColor, t, 0).rgb);
                     localCount += 1.0;
                 }
             }
@@ -83,5 +90,5 @@ void main() {
         float expected = max(filterLuminance(accumulated), localSum / max(localCount, 1.0));
         if (quantum < 3.0e38) variance = quantum * expected;
     }
-    imageStore(outColor, p, vec4(accumulated, variance / n));
+    imageStore(outColor, own, filterNearestHalf(vec4(accumulated, sqrt(variance / n))));
 }

@@ -131,6 +131,42 @@ TEST_F(CausticFilterTiles, EmptyViewListsNoTileAndWritesNothing) {
     EXPECT_EQ(nonZeroOutside(r, stray), 0u);
 }
 
+// An empty view keeps nothing of the history either (docs/caustics.md "Memory": a tile without a pool
+// tile has none): 4 frames of the caustic, one frame of sky (no surface, no tile listed, so no pass ran
+// and no history texel was read or written), then the caustic again. Temporal only, the last frame finds
+// no history and is exactly its unfiltered frame, as a first frame is; with history it would be the
+// mean of 2 or more frames.
+TEST_F(CausticFilterTiles, EmptyViewKeepsNoHistory) {
+    CausticsSettings st = settings();
+    st.atrousIterations = 0;
+    scene::Camera sky = towardsTheSpot();
+    sky.target = sky.eye + glm::vec3(0.0f, 1.0f, 0.1f);
+    std::vector<scene::Camera> cameras(4, towardsTheSpot());
+    cameras.push_back(sky);
+    auto skyOnly = runCaustics(*device, ballScene(), cameras, kSize, kSize, st);
+    ASSERT_TRUE(skyOnly) << skyOnly.message();
+    EXPECT_EQ(skyOnly.value().filterTiles, 0u);
+    EXPECT_EQ(nonZeroPixels(skyOnly.value().radiance), 0u);
+    cameras.push_back(towardsTheSpot());
+    auto back = runCaustics(*device, ballScene(), cameras, kSize, kSize, st);
+    ASSERT_TRUE(back) << back.message();
+    const CausticRun& r = back.value();
+    size_t differ = 0;
+    for (size_t i = 0; i < r.radiance.size(); ++i) differ += r.radiance[i] != r.firstType[i] + r.secondType[i] ? 1 : 0;
+    EXPECT_EQ(differ, 0u);
+    EXPECT_GT(nonZeroPixels(r.radiance), 0u);
+    // Control: without the sky frame the same frame is a mean (history kept), so the check above can fail.
+    cameras.erase(cameras.begin() + 4);
+    auto kept = runCaustics(*device, ballScene(), cameras, kSize, kSize, st);
+    ASSERT_TRUE(kept) << kept.message();
+    size_t averaged = 0;
+    for (size_t i = 0; i < kept.value().radiance.size(); ++i)
+        averaged += kept.value().radiance[i] != kept.value().firstType[i] + kept.value().secondType[i] ? 1 : 0;
+    std::printf("[ measured ] after the sky frame %zu pixels differ from the unfiltered frame; without it %zu\n", differ,
+                averaged);
+    EXPECT_GT(averaged, 100u);
+}
+
 // A tile keeps its history filterMaxHistory frames after its last photon, then drops out of the list
 // and reads as zero. The light goes out after 4 lit frames (filterMaxHistory 4): 3 dark frames later the
 // history still shows (tiles listed, light in the image), 4 dark frames later nothing is listed or shown.

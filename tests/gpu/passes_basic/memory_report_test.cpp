@@ -66,17 +66,19 @@ TEST_F(MemoryReport, EntriesFollowTheFrameThatRan) {
     const std::vector<MemoryEntry> report = module->memoryReport();
     auto large = byName(report);
 
-    // The default view's filter history, two copies of each (ping-pong): RGBA32F colour, R32F second
-    // moment, RGBA32UI packed guides, R32UI tile state per 8x8 tile.
-    const uint64_t pixels = 128 * 96;
+    // The default view's filter history, two copies of each (ping-pong), kept per listed 8x8 tile in a
+    // pool (docs/caustics.md "Filter", "Memory"): RGBA16F colour and RG32UI guides, 8 bytes per texel of
+    // the pool, whose capacity is all the screen's tiles in whole rows of 128 tiles for views this small
+    // (at most 1024 tiles: a quarter of the screen above that); R32UI tile state and slot map per tile.
+    const uint64_t poolTexels = 256u * 64u;   // 128x96: 192 tiles -> 2 rows
     for (const char* copy : {"0", "1"}) {
         const std::string h = std::string("view.history.");
-        EXPECT_EQ(large[h + "color" + copy], pixels * 16);
-        EXPECT_EQ(large[h + "moments" + copy], pixels * 4);
-        EXPECT_EQ(large[h + "guides" + copy], pixels * 16);
+        EXPECT_EQ(large[h + "color" + copy], poolTexels * 8);
+        EXPECT_EQ(large[h + "guides" + copy], poolTexels * 8);
         EXPECT_EQ(large[h + "tiles" + copy], (128u / 8) * (96u / 8) * 4u);
+        EXPECT_EQ(large[h + "slots" + copy], (128u / 8) * (96u / 8) * 4u);
     }
-    EXPECT_EQ(small["view.history.color0"], 64u * 48u * 16u);
+    EXPECT_EQ(small["view.history.color0"], 128u * 64u * 8u);   // 64x48: 48 tiles -> 1 row
 
     // Acceleration structures report the driver's sizes: the scene's (built at GpuScene::create) and the
     // sphere TLAS, allocated for W x H instances (docs/caustics.md "Memory kept"): 4x the pixels, 4x
@@ -108,7 +110,7 @@ TEST_F(MemoryReport, ASecondViewReportsItsOwnHistory) {
     EXPECT_EQ(before.count("view.history.color0"), 0u) << "history before the view rendered anything";
     renderFrame(96, 64, view->get());
     auto after = byName(module->memoryReport(**view));
-    EXPECT_EQ(after["view.history.color0"], 96u * 64u * 16u);
+    EXPECT_EQ(after["view.history.color0"], 128u * 64u * 8u);   // 96 tiles: one pool row of 128
     // The default view rendered nothing: no history in the module's report.
     auto own = byName(module->memoryReport());
     EXPECT_EQ(own.count("view.history.color0"), 0u);

@@ -1,0 +1,87 @@
+// The view's filter history (caustic_passes.h, CausticViewHistory; docs/caustics.md "Filter", "Memory"):
+// allocated per listed tile, in a pool whose capacity follows the view's caustic coverage.
+#include <algorithm>
+#include <string>
+
+#include "caustic_filter/caustic_filter.h"
+#include "caustic_maps/caustic_internal.h"
+#include "caustics/rhi/log.h"
+
+namespace caustics {
+namespace {
+
+uint32_t roundUpToPoolRows(uint32_t tiles) {
+    return (tiles + kFilterPoolTilesPerRow - 1) / kFilterPoolTilesPerRow * kFilterPoolTilesPerRow;
+}
+
+// The tiles the last frame recorded in this frame slot listed (the host waited for it before reusing
+// the slot), if it was of this size.
+uint32_t tilesWantedBefore(rhi::IDevice& device, const CausticViewHistory& h, uint32_t slot) {
+    uint32_t count = 0;
+    if (slot < h.tileCounts.size() && h.tileCounts[slot] && h.tileCountRecorded[slot] &&
+        device.readBuffer(h.tileCounts[slot], &count, sizeof(count)))
+        return count;
+    return 0;
+}
+
+}  // namespace
+
+uint32_t initialFilterPoolTiles(uint32_t width, uint32_t height) {
+    const uint32_t screen = filterScreenTiles(width, height);
+    return std::min(roundUpToPoolRows(screen), std::max(kFilterMinPoolTiles, roundUpToPoolRows(screen / kFilterInitialPoolDivisor)));
+}
+
+uint32_t grownFilterPoolTiles(uint32_t poolTiles, uint32_t wanted, uint32_t width, uint32_t height) {
+    if (wanted <= poolTiles) return poolTiles;
+    return std::min(roundUpToPoolRows(filterScreenTiles(width, height)), roundUpToPoolRows(wanted + wanted / 4));
+}
+
+Status ensureFilterHistory(CausticResources::Impl& res, CausticViewHistory& h, uint32_t width, uint32_t height) {
+    rhi::IDevice& d = *res.device;
+    const uint32_t slots = uint32_t(res.frameSets.size());
+    if (h.tileCounts.size() != slots) {
+        h.tileCounts.assign(slots, nullptr);
+        h.tileCountRecorded.assign(slots, 0);
+    }
+    const bool sized = h.color[0] && h.width == width && h.height == height;
+    uint32_t pool = sized ? h.poolTiles : initialFilterPoolTiles(width, height);
+    if (sized) {
+        const uint32_t wanted = tilesWantedBefore(d, h, res.frameSlot);
+        pool = grownFilterPoolTiles(h.poolTiles, wanted, width, height);
+        if (pool != h.poolTiles)
+            log(LogLevel::Warning, "caustics: filter history pool of " + std::to_string(h.poolTiles) +
+                                                 " tiles overflowed (" + std::to_string(wanted) +
+                                                 " listed; their history was dropped): grown to " + std::to_string(pool));
+    }
+    if (!h.tileCounts[res.frameSlot]) {
+        auto buffer = d.createBuffer(rhi::BufferDesc().setByteSize(4).setUsage(rhi::BufferUsage::CopyDest)
+                                         .setMemory(rhi::MemoryType::Readback)
+                                         .setDebugName("caustics.filterTileCountReadback"));
+        if (buffer) h.tileCounts[res.frameSlot] = buffer.value();   // without it the pool never grows
+    }
+    if (sized && pool == h.poolTiles) return okStatus();
+
+    auto make = [&](uint32_t w, uint32_t ht, rhi::Format f, std::string name) {
+        return d.createTexture(rhi::TextureDesc().setSize(w, ht).setFormat(f)
+                                   .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage)
+                                   .setDebugName(name));
+    };
+    const uint32_t poolW = filterPoolWidth(), poolH = filterPoolHeight(pool);
+    const uint32_t tilesX = (width + 7) / 8, tilesY = (height + 7) / 8;
+    for (uint32_t i = 0; i < 2; ++i) {
+        const std::string n = std::to_string(i);
+        CAUSTICS_TRY(h.color[i], make(poolW, poolH, rhi::Format::RGBA16_FLOAT, "caustics.historyColor" + n));
+        CAUSTICS_TRY(h.guides[i], make(poolW, poolH, rhi::Format::RG32_UINT, "caustics.historyGuides" + n));
+        CAUSTICS_TRY(h.tiles[i], make(tilesX, tilesY, rhi::Format::R32_UINT, "caustics.historyTiles" + n));
+        CAUSTICS_TRY(h.slots[i], make(tilesX, tilesY, rhi::Format::R32_UINT, "caustics.historySlots" + n));
+    }
+    h.poolTiles = pool;
+    h.parity = 0;
+    h.width = width;
+    h.height = height;
+    h.valid = false;
+    std::fill(h.tileCountRecorded.begin(), h.tileCountRecorded.end(), uint8_t(0));
+    return okStatus();
+}
+
+}  // namespace caustics

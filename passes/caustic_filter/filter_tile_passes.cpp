@@ -1,0 +1,109 @@
+// The filter's tile passes and history import (filter_graph.h; docs/caustics.md "Filter", "Tiles",
+// "Memory"): caustics.filterTiles (the view's tile state), .clear, .list (the tile list, each listed
+// tile's pool tile) and .count (the tiles wanted, read back to size the pool).
+#include <cmath>
+#include <string>
+
+#include "caustic_filter/filter_graph.h"
+
+namespace caustics::filter {
+
+float filterPreExposure(const CausticFrame& f) {
+    const float pre = f.in->settings.exposure * f.in->scene->exposure;
+    return std::isfinite(pre) && pre > 0.0f ? pre : 1.0f;
+}
+
+HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& history) {
+    const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
+    const rhi::ResourceState now = history.valid ? ro : rhi::ResourceState::Undefined;
+    auto import = [&](const char* name, const rhi::TextureHandle (&t)[2], uint32_t i) {
+        return graph.importTexture(std::string(name) + std::to_string(i), t[i], now, ro);
+    };
+    const uint32_t previous = history.parity, next = history.parity ^ 1u;
+    return {import("caustics.historyColor", history.color, previous),
+            import("caustics.historyGuides", history.guides, previous),
+            import("caustics.historyTiles", history.tiles, previous),
+            import("caustics.historySlots", history.slots, previous),
+            import("caustics.historyColor", history.color, next),
+            import("caustics.historyGuides", history.guides, next),
+            import("caustics.historyTiles", history.tiles, next),
+            import("caustics.historySlots", history.slots, next)};
+}
+
+// caustics.filterTiles: this frame's tile state (tiles.comp), then caustics.filterTiles.list clears the
+// arguments to (0, 1, 1, 0), lists the tiles and gives each a pool tile (tile_list.comp). Nothing after
+// it runs on an unlisted tile.
+FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, rg::RgTexture raw,
+                          bool historyUsable) {
+    const uint32_t w = f.width, h = f.height, tilesX = (w + 7) / 8, tilesY = (h + 7) / 8;
+    const uint32_t capacity = f.history->poolTiles;
+    FilterTiles t;
+    graph.addPass("caustics.filterTiles", [&](rg::PassBuilder& b) {
+        f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
+        const GBuffer& g = f.in->gbuffer;
+        const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.objectId), b.read(hist.previousTiles)};
+        hist.tiles = b.write(hist.tiles);
+        CausticFrame fr = f;
+        rg::RgTexture o = hist.tiles;
+        struct { uint32_t historyValid, keepFrames; } push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory};
+        return [=](rg::PassContext& ctx) {
+            rhi::BindingSetDesc d = textureBindings(ctx, 1, {in[0], in[1], in[2], in[3]}, {o});
+            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(fr.camera)));
+            if (bindFilter(ctx, *fr.res, fr.res->filter.tiles, fr.res->filter.tilesLayout, d, push))
+                ctx.cmd().dispatch(tilesX, tilesY);   // one group per tile
+        };
+    });
+    graph.addPass("caustics.filterTiles.clear", [&](rg::PassBuilder& b) {
+        t.args = b.write(b.createBuffer("caustics.filterTileArgs",
+                                        rhi::BufferDesc().setByteSize(16)
+                                            .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::Indirect |
+                                                      rhi::BufferUsage::CopyDest | rhi::BufferUsage::CopySource)
+                                            .setDebugName("caustics.filterTileArgs")),
+                         rg::Access::CopyDest);
+        rg::RgBuffer args = t.args;
+        return [=](rg::PassContext& ctx) {
+            ctx.cmd().fillBuffer(ctx.buffer(args), 0u, 0, 4);
+            ctx.cmd().fillBuffer(ctx.buffer(args), 1u, 4, 8);
+            ctx.cmd().fillBuffer(ctx.buffer(args), 0u, 12, 4);
+        };
+    });
+    graph.addPass("caustics.filterTiles.list", [&](rg::PassBuilder& b) {
+        hist.tiles = b.write(hist.tiles, rg::Access::StorageReadWrite);
+        hist.slots = b.write(hist.slots);
+        t.args = b.write(t.args, rg::Access::StorageReadWrite);
+        t.list = b.write(b.createBuffer("caustics.filterTileList", rhi::BufferDesc().setByteSize(uint64_t(capacity) * 4)
+                                                                      .setUsage(rhi::BufferUsage::Storage)
+                                                                      .setDebugName("caustics.filterTileList")));
+        t.slots = hist.slots;
+        CausticFrame fr = f;
+        FilterTiles o = t;
+        rg::RgTexture state = hist.tiles;
+        struct { int32_t tilesX, tilesY; uint32_t capacity; } push{int32_t(tilesX), int32_t(tilesY), capacity};
+        return [=](rg::PassContext& ctx) {
+            rhi::BindingSetDesc d;
+            d.add(rhi::BindingSetItem::storageTexture(0, ctx.texture(state)))
+                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(o.args)))
+                .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(o.list)))
+                .add(rhi::BindingSetItem::storageTexture(3, ctx.texture(o.slots)));
+            dispatchImage(ctx, *fr.res, fr.res->filter.tileList, fr.res->filter.tileListLayout, d, push, tilesX, tilesY);
+        };
+    });
+    graph.addPass("caustics.filterTiles.count", [&](rg::PassBuilder& b) {
+        t.args = b.read(t.args, rg::Access::CopySource);
+        b.setSideEffects();   // writes a host-visible buffer the graph does not track
+        rg::RgBuffer args = t.args;
+        CausticViewHistory* history = f.history;
+        const uint32_t slot = f.res->frameSlot;
+        return [=](rg::PassContext& ctx) {
+            if (slot >= history->tileCounts.size() || !history->tileCounts[slot]) return;
+            ctx.cmd().copyBuffer(history->tileCounts[slot], 0, ctx.buffer(args), 12, 4);
+            history->tileCountRecorded[slot] = 1;
+        };
+    });
+    // The next frame reads the tile state and the slot map: never culled.
+    graph.markOutput(hist.tiles);
+    graph.markOutput(hist.slots);
+    return t;
+}
+
+}  // namespace caustics::filter
