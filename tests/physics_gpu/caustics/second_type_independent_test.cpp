@@ -144,25 +144,26 @@ TEST_F(SecondTypeIndependent, RingThroughPaneMatches) {
 
 // One frame without holes (issue 18): at 1 ray per texel (map 512^2, the sample's default) with the filter on,
 // no pixel where the reference exceeds 10 % of its peak is zero, and the filtered single frame is closer to
-// the reference (relative L1 over those pixels) than the mean of 4 unfiltered frames. Measured (offsets
-// 0..2): 0 zero pixels of ~2,350 each time; L1 filtered 0.077 / 0.095 / 0.084 against 0.126 / 0.128 / 0.128.
-TEST_F(SecondTypeIndependent, FilteredSingleFrameHasNoHolesAndBeatsFourUnfilteredFrames) {
-    constexpr uint32_t kSize = 96;
-    IndependentCase c = ballFromAbove();
+// the reference (relative L1 over those pixels) than the mean of 4 unfiltered frames.
+// filterMustBeatFourFrames: the L1 comparison is asserted (else only printed); minPixels: caustic pixels expected.
+void expectOneFilteredFrameWithoutHoles(rhi::IDevice& device, const IndependentCase& c, uint32_t kSize, bool filterMustBeatFourFrames,
+                                        uint32_t minPixels) {
     CausticsSettings s = secondTypeSettings(512, 1.0f);
     s.filter = true;
     s.seed = seedOffset() + 1;
-    auto filtered = runCaustics(*device, c.module, c.camera, kSize, kSize, s);
+    auto filtered = runCaustics(device, c.module, c.camera, kSize, kSize, s);
     ASSERT_TRUE(filtered) << filtered.message();
     s.filter = false;
-    auto unfiltered = averagedRun(*device, c.module, c.camera, kSize, s, 4);
+    auto unfiltered = averagedRun(device, c.module, c.camera, kSize, s, 4);
     ASSERT_TRUE(unfiltered) << unfiltered.message();
 
     ref::EstimateOptions o;
     o.width = o.height = kSize;
     o.photons = 8'000'000;
-    o.histogramResolution = 16000;
-    o.radialHistogram = true;
+    o.histogramResolution = c.axial ? 16000 : 1024;
+    o.radialHistogram = c.axial;
+    o.receiverCentreX = c.receiverX;
+    o.receiverCentreZ = c.receiverZ;
     o.receiverHalfSize = c.receiverHalfSize;
     o.seed = seedOffset();
     ref::SecondTypeImage refImage = ref::renderSecondType(c.reference, c.pinhole(), ref::traceFloorPhotons(c.reference, o), o);
@@ -180,13 +181,30 @@ TEST_F(SecondTypeIndependent, FilteredSingleFrameHasNoHolesAndBeatsFourUnfiltere
         l1Unfiltered += std::abs(u[i] - r[i]);
         sum += r[i];
     }
-    std::printf("[ measured ] one frame, 1 ray per texel: %u of %u caustic pixels zero after the filter; relative L1 filtered "
-                "(1 frame) %.4f, unfiltered (4 frames) %.4f\n", holes, inside, l1Filtered / sum, l1Unfiltered / sum);
-    dumpLuminance("one frame filtered", f, kSize);
-    dumpLuminance("four frames unfiltered", u, kSize);
-    ASSERT_GT(inside, 1000u);
+    std::printf("[ measured ] %s, one frame, 1 ray per texel: %u of %u caustic pixels zero after the filter; relative L1 filtered "
+                "(1 frame) %.4f, unfiltered (4 frames) %.4f\n", c.name.c_str(), holes, inside, l1Filtered / sum, l1Unfiltered / sum);
+    dumpLuminance(c.name + " one frame filtered", f, kSize);
+    dumpLuminance(c.name + " four frames unfiltered", u, kSize);
+    ASSERT_GT(inside, minPixels);
     EXPECT_EQ(holes, 0u);
-    EXPECT_LT(l1Filtered, l1Unfiltered);
+    if (filterMustBeatFourFrames) {
+        EXPECT_LT(l1Filtered, l1Unfiltered);
+    }
+}
+
+// The ball from above, offsets 0..2: 0 zero pixels of ~2,350 each time; L1 filtered 0.077 / 0.095 / 0.084
+// against 0.126 / 0.128 / 0.128 (the filtered L1, 0.085 +- 0.009, lies 4.5 standard deviations below the unfiltered one).
+TEST_F(SecondTypeIndependent, FilteredSingleFrameHasNoHolesAndBeatsFourUnfilteredFrames) {
+    expectOneFilteredFrameWithoutHoles(*device, ballFromAbove(), 96, true, 1000);
+}
+
+// The water glass: no zero pixel among the 591 (offset 0), but the filtered frame is FARTHER from the
+// reference than 4 unfiltered frames (relative L1 0.477 against 0.292): single bright pixels survive the
+// filter, which runs on the glass's G-buffer (the curved wall's normals and depth), not the floor's seen
+// through it. Issue 18's part 4 (second-type guides for the filter) is to fix that; until then the L1
+// comparison is printed, not asserted.
+TEST_F(SecondTypeIndependent, FilteredSingleFrameOfTheWaterGlassHasNoHoles) {
+    expectOneFilteredFrameWithoutHoles(*device, waterGlass(), 96, false, 500);
 }
 
 }  // namespace
