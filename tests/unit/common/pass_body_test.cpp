@@ -1,0 +1,69 @@
+// The pass bodies (passes/<pass>/shaders/<name>.h, docs/shaders.md) compiled as C++: the compiler
+// type-checks the code the GLSL and HLSL entries run, and these tests pin its behaviour.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "composite/shaders/composite.h"
+#include "gbuffer/shaders/remap_object_ids.h"
+
+namespace caustics::shader {
+
+namespace {
+std::vector<uint2> gPairs;   // the remap body's storage buffer (bindings/remap_object_ids.h on the GPU)
+}  // namespace
+uint2 pairsLoad(uint i) { return gPairs.at(i); }
+
+namespace {
+
+CompositeParams params(uint aov, uint hasCaustics) { return {aov, hasCaustics, 2.0f, 10.0f, uint2(4, 4)}; }
+
+CompositeInputs inputs() {
+    CompositeInputs t;
+    t.direct = float3(0.25f, 0.5f, 0.125f);
+    t.caustics = float3(1.0f, 0.0f, 0.5f);
+    t.albedo = float3(0.5f);
+    t.normal = float3(0.0f, -1.0f, 0.0f);
+    t.linearDepth = 2.5f;
+    return t;
+}
+
+// Exact compares: the body is the same float arithmetic as the references it is compared with.
+TEST(CompositeBody, FinalAovIsDirectPlusCausticsExposedAndToneMapped) {
+    CompositeOutput o = compositePixel(params(kAovFinal, 1u), inputs());
+    EXPECT_EQ(o.linearValue, inputs().direct + inputs().caustics);
+    EXPECT_EQ(o.shown, srgbEncode(acesFitted((inputs().direct + inputs().caustics) * 2.0f)));
+}
+
+TEST(CompositeBody, WithoutCausticsTheRepeatedBindingIsNotAdded) {
+    CompositeOutput o = compositePixel(params(kAovCaustics, 0u), inputs());
+    EXPECT_EQ(o.linearValue, float3(0.0f));
+    EXPECT_EQ(compositePixel(params(kAovFinal, 0u), inputs()).linearValue, inputs().direct);
+}
+
+TEST(CompositeBody, NormalAovIsRemappedToZeroOneWithoutTheSrgbCurve) {
+    CompositeOutput o = compositePixel(params(kAovNormal, 1u), inputs());
+    EXPECT_EQ(o.shown, float3(0.5f, 0.0f, 0.5f));
+    EXPECT_EQ(o.linearValue, inputs().normal);
+}
+
+TEST(CompositeBody, DepthAovIsWhiteNearTheCameraAndBlackForTheBackground) {
+    EXPECT_FLOAT_EQ(compositePixel(params(kAovDepth, 1u), inputs()).shown.x, 1.0f - 2.5f / 10.0f);
+    CompositeInputs background = inputs();
+    background.linearDepth = 0.0f;   // the G-buffer clears to 0 where nothing was drawn
+    EXPECT_EQ(compositePixel(params(kAovDepth, 1u), background).shown, float3(0.0f));
+}
+
+TEST(RemapObjectIdsBody, ListedHostIdsFindTheirModuleIdAndOthersBecomeBackground) {
+    gPairs = {{3, 10}, {7, 11}, {8, 12}, {40, 13}, {1000, 14}};   // sorted by host id
+    EXPECT_EQ(moduleObjectIdOf(3, 5), 10u);
+    EXPECT_EQ(moduleObjectIdOf(8, 5), 12u);
+    EXPECT_EQ(moduleObjectIdOf(1000, 5), 14u);
+    EXPECT_EQ(moduleObjectIdOf(0, 5), 0u);
+    EXPECT_EQ(moduleObjectIdOf(9, 5), 0u);
+    EXPECT_EQ(moduleObjectIdOf(5000, 5), 0u);   // past the last pair: no read beyond pairCount (at() throws)
+    EXPECT_EQ(moduleObjectIdOf(1000, 4), 0u);   // only the first pairCount pairs are the map
+}
+
+}  // namespace
+}  // namespace caustics::shader
