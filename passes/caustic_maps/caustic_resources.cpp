@@ -110,7 +110,7 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     CAUSTICS_TRY(m.gatherState, d.createStateObject(g));
     CAUSTICS_TRY(m.gatherTable, d.createShaderTable(rhi::ShaderTableDesc{m.gatherState}.setRayGen("rayGen").addMiss("miss").addHitGroup("spheres")));
 
-    // One unit-sphere AABB; NoDuplicateAnyHit because the any-hit shader accumulates (DESIGN.md).
+    // One unit-sphere AABB; NoDuplicateAnyHit because the any-hit shader accumulates (docs/caustics.md, "Second type").
     const float aabb[6] = {-1, -1, -1, 1, 1, 1};
     CAUSTICS_TRY(m.sphereAabb, d.createBuffer(rhi::BufferDesc().setByteSize(sizeof(aabb))
                                                   .setUsage(rhi::BufferUsage::AccelStructInput)
