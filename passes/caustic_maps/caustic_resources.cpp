@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <cstring>
 
+#include "caustic_maps/grid_from_count_bindings.h"
+#include "caustic_maps/shaders/grid_from_count.h"
 #include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 namespace {
@@ -85,8 +88,9 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     CAUSTICS_TRY(m.photonPlanPipeline, compute(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout}, 8));
     CAUSTICS_TRY(m.backwardLayout, makeBindingLayout(d, {{0, CB}, {3, RW}, {4, RW}, {5, RW}, {6, RO}}));
     CAUSTICS_TRY(m.gatherLayout, makeBindingLayout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
-    CAUSTICS_TRY(m.gridLayout, makeBindingLayout(d, {{0, RO}, {1, RW}}));
-    CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout}, 12));
+    CAUSTICS_TRY(m.gridLayout, createPassBindingLayout(d, shader_bindings::kGridFromCountBindings, 0, ShaderStage::All));
+    CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout},
+                                          sizeof(shader::GridFromCountParams)));
     CAUSTICS_TRY(m.specularPixelLayout, makeBindingLayout(d, {{0, TX}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
     CAUSTICS_TRY(m.specularPixelPipeline, compute(d, "backward_trace/specular_pixels.comp", {m.specularPixelLayout}, 12));
     CAUSTICS_TRY(m.filter, CausticFilterPipelines::create(d));

@@ -27,6 +27,25 @@ uint32_t builtinStride(std::string_view t) {
     return 0;
 }
 
+// Raw-buffer access of element i: Load/Load2/Load4 with asfloat/asint for the built-in types (any
+// shader model), the templated Load<T>/Store<T> (StructuredBuffer layout) for a struct.
+std::string hlslRawLoad(const Binding& b, uint32_t stride) {
+    const std::string name = str(b.name), element = str(b.element), at = "(i * " + std::to_string(stride) + "u)";
+    if (!builtinStride(b.element)) return name + ".Load<" + element + ">" + at;
+    const uint32_t n = builtinStride(b.element) / 4;
+    const std::string load = name + ".Load" + (n > 1 ? std::to_string(n) : "") + at;
+    if (element.rfind("float", 0) == 0) return "asfloat(" + load + ")";
+    if (element.rfind("int", 0) == 0) return "asint(" + load + ")";
+    return load;
+}
+
+std::string hlslRawStore(const Binding& b, uint32_t stride) {
+    const std::string name = str(b.name), at = "i * " + std::to_string(stride) + "u";
+    if (!builtinStride(b.element)) return name + ".Store<" + str(b.element) + ">(" + at + ", v)";
+    const uint32_t n = builtinStride(b.element) / 4;
+    return name + ".Store" + (n > 1 ? std::to_string(n) : "") + "(" + at + ", asuint(v))";
+}
+
 std::string glslType(std::string_view t) {
     static const std::pair<const char*, const char*> kMap[] = {
         {"float2", "vec2"}, {"float3", "vec3"}, {"float4", "vec4"}, {"uint2", "uvec2"}, {"uint3", "uvec3"},
@@ -90,11 +109,8 @@ bool writeBinding(const Binding& b, std::string& glsl, std::string& hlsl, std::s
             glsl += glslType(b.element) + " " + name + "Load(uint i) { return " + name + "[i]; }\n";
             if (rw) glsl += "void " + name + "Store(uint i, " + glslType(b.element) + " v) { " + name + "[i] = v; }\n";
             hlsl += std::string(rw ? "RWByteAddressBuffer " : "ByteAddressBuffer ") + name + registerOf(b, rw ? 'u' : 't');
-            hlsl += element + " " + name + "Load(uint i) { return " + name + ".Load<" + element + ">(i * " +
-                    std::to_string(stride) + "u); }\n";
-            if (rw)
-                hlsl += "void " + name + "Store(uint i, " + element + " v) { " + name + ".Store<" + element + ">(i * " +
-                        std::to_string(stride) + "u, v); }\n";
+            hlsl += element + " " + name + "Load(uint i) { return " + hlslRawLoad(b, stride) + "; }\n";
+            if (rw) hlsl += "void " + name + "Store(uint i, " + element + " v) { " + hlslRawStore(b, stride) + "; }\n";
             return true;
         }
         case Kind::SampledTexture: {

@@ -3,10 +3,11 @@
 // GLSL and HLSL declarations of each. A pass adopting the scheme adds its declaration here and its
 // name to CAUSTICS_PASS_BINDINGS (shaders/bindings/CMakeLists.txt).
 #include "composite/composite_bindings.h"
+#include "caustic_maps/grid_from_count_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 
 namespace caustics::shader_bindings {
 
-inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings};
+inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings};
 
 }  // namespace caustics::shader_bindings

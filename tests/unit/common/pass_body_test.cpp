@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "composite/shaders/composite.h"
+#include "caustic_maps/shaders/grid_from_count.h"
 #include "gbuffer/shaders/remap_object_ids.h"
 
 namespace caustics::shader {
@@ -13,6 +14,12 @@ namespace {
 std::vector<uint2> gPairs;   // the remap body's storage buffer (bindings/remap_object_ids.h on the GPU)
 }  // namespace
 uint2 pairsLoad(uint i) { return gPairs.at(i); }
+
+namespace {
+std::vector<uint> gCounters, gGrid;   // the grid-from-count body's buffers
+}  // namespace
+uint countersLoad(uint i) { return gCounters.at(i); }
+void gridStore(uint i, uint v) { gGrid.at(i) = v; }
 
 namespace {
 
@@ -63,6 +70,17 @@ TEST(RemapObjectIdsBody, ListedHostIdsFindTheirModuleIdAndOthersBecomeBackground
     EXPECT_EQ(moduleObjectIdOf(9, 5), 0u);
     EXPECT_EQ(moduleObjectIdOf(5000, 5), 0u);   // past the last pair: no read beyond pairCount (at() throws)
     EXPECT_EQ(moduleObjectIdOf(1000, 4), 0u);   // only the first pairCount pairs are the map
+}
+
+TEST(GridFromCountBody, LaunchesFollowTheCounterUpToTheCapAndNoneWhenTheGateIsZero) {
+    gCounters = {500, 7, 0};
+    gGrid = {9, 9, 9};
+    writeGridFromCount({0, 100, 1});
+    EXPECT_EQ(gGrid, (std::vector<uint>{100, 1, 1}));   // capped
+    writeGridFromCount({1, 100, 0});
+    EXPECT_EQ(gGrid, (std::vector<uint>{7, 1, 1}));
+    writeGridFromCount({0, 100, 2});
+    EXPECT_EQ(gGrid, (std::vector<uint>{0, 1, 1}));     // gate counter 0: no sphere, no gather
 }
 
 }  // namespace
