@@ -4,10 +4,11 @@
 // name to CAUSTICS_PASS_BINDINGS (shaders/bindings/CMakeLists.txt).
 #include "composite/composite_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
+#include "caustic_maps/photon_plan_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 
 namespace caustics::shader_bindings {
 
-inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings};
+inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings};
 
 }  // namespace caustics::shader_bindings

@@ -6,6 +6,7 @@
 
 #include "composite/shaders/composite.h"
 #include "caustic_maps/shaders/grid_from_count.h"
+#include "caustic_maps/shaders/photon_plan.h"
 #include "gbuffer/shaders/remap_object_ids.h"
 
 namespace caustics::shader {
@@ -20,6 +21,16 @@ std::vector<uint> gCounters, gGrid;   // the grid-from-count body's buffers
 }  // namespace
 uint countersLoad(uint i) { return gCounters.at(i); }
 void gridStore(uint i, uint v) { gGrid.at(i) = v; }
+
+namespace {
+std::vector<float> gMapWords;   // the photon plan's buffers
+std::vector<CausticLayerPlan> gPlans;
+std::vector<uint> gArgs(3);
+}  // namespace
+float mapWordsLoad(uint i) { return gMapWords.at(i); }
+CausticLayerPlan plansLoad(uint i) { return gPlans.at(i); }
+void plansStore(uint i, CausticLayerPlan plan) { gPlans.at(i) = plan; }
+void argsStore(uint i, uint v) { gArgs.at(i) = v; }
 
 namespace {
 
@@ -81,6 +92,33 @@ TEST(GridFromCountBody, LaunchesFollowTheCounterUpToTheCapAndNoneWhenTheGateIsZe
     EXPECT_EQ(gGrid, (std::vector<uint>{7, 1, 1}));
     writeGridFromCount({0, 100, 2});
     EXPECT_EQ(gGrid, (std::vector<uint>{0, 1, 1}));     // gate counter 0: no sphere, no gather
+}
+
+// Layers with budgets of 100, 50 and 0 photons (0: raysPerTexel per texel) and 10, 0 and 4 emitters.
+void planThreeLayers() {
+    gMapWords.assign(3 * kCausticMapWords, 0.0f);
+    gMapWords[0 * kCausticMapWords + kCausticMapPhotonsWord] = 100.0f;
+    gMapWords[1 * kCausticMapWords + kCausticMapPhotonsWord] = 50.0f;
+    gPlans.assign(3, CausticLayerPlan{});
+    gPlans[0].emitters = 10;
+    gPlans[2].emitters = 4;
+    planPhotons({3, 2.5f});
+}
+
+TEST(PhotonPlanBody, ALayerWithoutEmittersHandsItsShareToTheOthers) {
+    planThreeLayers();
+    EXPECT_FLOAT_EQ(gPlans[0].raysPerTexel, 15.0f);   // (100 + 50) photons over 10 texels
+    EXPECT_EQ(gPlans[0].launches, 150u);
+    EXPECT_EQ(gPlans[1].launches, 0u);
+}
+
+TEST(PhotonPlanBody, ALayerWithoutABudgetEmitsRaysPerTexelAndLaunchRangesFollowEachOther) {
+    planThreeLayers();
+    EXPECT_FLOAT_EQ(gPlans[2].raysPerTexel, 2.5f);
+    EXPECT_EQ(gPlans[2].samplesPerTexel, 3u);   // the last sample of a texel is emitted with p = 0.5
+    EXPECT_EQ(gPlans[2].launchOffset, 150u);
+    EXPECT_EQ(gPlans[2].launches, 12u);
+    EXPECT_EQ(gArgs, (std::vector<uint>{162, 1, 1}));
 }
 
 }  // namespace
