@@ -42,10 +42,15 @@ set_target_properties(glm::glm PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${cross
 file(WRITE "${CMAKE_BINARY_DIR}/cross-config/glmConfig.cmake" "# glm::glm is defined by WindowsCrossDependencies.cmake\n")
 set(glm_DIR "${CMAKE_BINARY_DIR}/cross-config" CACHE PATH "" FORCE)
 
-# The HLSL embedder runs at build time, so it must be a host program (built by the native build).
+# The HLSL embedder and the binding generator run at build time, so they must be host programs (built
+# by the native build).
 if(NOT CAUSTICS_HOST_EMBED_HLSL OR NOT EXISTS "${CAUSTICS_HOST_EMBED_HLSL}")
   message(FATAL_ERROR "Windows cross build: set CAUSTICS_HOST_EMBED_HLSL to a host-built caustics_embed_hlsl "
                       "(scripts/windows-cross-check.sh builds it)")
+endif()
+if(NOT CAUSTICS_HOST_GENERATE_BINDINGS OR NOT EXISTS "${CAUSTICS_HOST_GENERATE_BINDINGS}")
+  message(FATAL_ERROR "Windows cross build: set CAUSTICS_HOST_GENERATE_BINDINGS to a host-built "
+                      "caustics_generate_bindings (scripts/windows-cross-check.sh builds it)")
 endif()
 
 # The sample's non-window code (no GLFW, no OpenImageIO): the headless frame loop, scene choice and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs every build and test dependency from Debian packages (see DESIGN.md "Dependencies").
+# Installs every build and test dependency from Debian packages (README.md).
 # Idempotent; works as root or through sudo. Mesa's lavapipe (with ray tracing) comes from
 # bookworm-backports, added with the URI of this machine's own Debian source: no mirror is hard-coded.
 # clang + libclang-rt-14-dev: libFuzzer for scripts/fuzz-check.sh (docs/viewer.md, "Fuzzing").

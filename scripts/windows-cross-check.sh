@@ -19,13 +19,16 @@ if ! command -v x86_64-w64-mingw32-g++-posix >/dev/null; then
   exit 2
 fi
 
-# The HLSL embedder runs during the build, so it is built for the host first (a no-op when current).
+# The HLSL embedder and the binding generator run during the build, so they are built for the host
+# first (a no-op when current).
 if [ ! -f "$hostDir/CMakeCache.txt" ]; then
   cmake -S . -B "$hostDir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCAUSTICS_WITH_D3D12=ON >/dev/null
 fi
-cmake --build "$hostDir" --target caustics_embed_hlsl -j "$jobs" >/dev/null
+cmake --build "$hostDir" --target caustics_embed_hlsl caustics_generate_bindings -j "$jobs" >/dev/null
 hostTool="$(cd "$hostDir" && pwd)/shaders/d3d12/caustics_embed_hlsl"
+hostBindings="$(cd "$hostDir" && pwd)/shaders/bindings/caustics_generate_bindings"
 
-cmake --preset windows-mingw-cross -B "$crossDir" -DCAUSTICS_HOST_EMBED_HLSL="$hostTool" >/dev/null
+cmake --preset windows-mingw-cross -B "$crossDir" -DCAUSTICS_HOST_EMBED_HLSL="$hostTool" \
+  -DCAUSTICS_HOST_GENERATE_BINDINGS="$hostBindings" >/dev/null
 cmake --build "$crossDir" -j "$jobs" --target caustics_rhi caustics_passes caustics_windows_sample_check
 echo "windows-cross-check: caustics_rhi (Vulkan + D3D12), caustics_passes, engine and sample code compiled for Windows x64"

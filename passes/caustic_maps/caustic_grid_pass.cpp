@@ -1,7 +1,11 @@
 // A one-thread pass that turns a GPU counter of caustics.stats into the grid of an indirect ray
-// dispatch (shaders/*/caustic_maps/grid_from_count.*): the gather follows the stored-hit count and
-// launches nothing when there is no sphere.
+// dispatch (passes/caustic_maps/shaders/grid_from_count.h): the gather follows the stored-hit count
+// and launches nothing when there is no sphere.
 #include "caustic_maps/caustic_internal.h"
+#include "caustic_maps/grid_from_count_bindings.h"
+#include "caustic_maps/shaders/grid_from_count.h"
+#include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
@@ -17,16 +21,21 @@ rg::RgBuffer addGridFromCountPass(rg::RenderGraph& graph, CausticFrame& f, const
         rg::RgBuffer out = grid;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gridLayout,
-                                                  rhi::BindingSetDesc()
-                                                      .add(rhi::BindingSetItem::storageBuffer(0, ctx.buffer(h.stats), false))
-                                                      .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(out))));
+            auto desc = PassBindingSet(shader_bindings::kGridFromCountBindings, 0)
+                            .buffer("counters", ctx.buffer(h.stats))
+                            .buffer("grid", ctx.buffer(out))
+                            .desc();
+            if (!desc) {
+                log(LogLevel::Error, std::string(name) + ": " + desc.message());
+                return;
+            }
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gridLayout, *desc);
             if (!set) return;
-            const uint32_t push[3] = {statSlot, cap, gateSlot};
+            const shader::GridFromCountParams push{statSlot, cap, gateSlot};
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setComputePipeline(r.gridFromCount);
             cmd.setBindingSet(0, set);
-            cmd.setPushConstants(push, sizeof(push));
+            cmd.setPushConstants(&push, sizeof(push));
             cmd.dispatch(1, 1, 1);
         };
     });

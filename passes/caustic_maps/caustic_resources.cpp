@@ -7,7 +7,12 @@
 #include <algorithm>
 #include <cstring>
 
+#include "caustic_maps/grid_from_count_bindings.h"
+#include "caustic_maps/photon_plan_bindings.h"
+#include "caustic_maps/shaders/grid_from_count.h"
+#include "caustic_maps/shaders/photon_plan.h"
 #include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 namespace {
@@ -81,12 +86,14 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     CAUSTICS_TRY(m.emitterLayout, makeBindingLayout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}, {5, RO}}));
     CAUSTICS_TRY(m.forwardLayout, makeBindingLayout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW},
                                                         {8, RW}, {9, RO}}));
-    CAUSTICS_TRY(m.photonPlanLayout, makeBindingLayout(d, {{0, RO}, {1, RW}, {2, RW}}));
-    CAUSTICS_TRY(m.photonPlanPipeline, compute(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout}, 8));
+    CAUSTICS_TRY(m.photonPlanLayout, createPassBindingLayout(d, shader_bindings::kPhotonPlanBindings, 0, ShaderStage::All));
+    CAUSTICS_TRY(m.photonPlanPipeline, compute(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout},
+                                               sizeof(shader::PhotonPlanParams)));
     CAUSTICS_TRY(m.backwardLayout, makeBindingLayout(d, {{0, CB}, {3, RW}, {4, RW}, {5, RW}, {6, RO}}));
     CAUSTICS_TRY(m.gatherLayout, makeBindingLayout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
-    CAUSTICS_TRY(m.gridLayout, makeBindingLayout(d, {{0, RO}, {1, RW}}));
-    CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout}, 12));
+    CAUSTICS_TRY(m.gridLayout, createPassBindingLayout(d, shader_bindings::kGridFromCountBindings, 0, ShaderStage::All));
+    CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout},
+                                          sizeof(shader::GridFromCountParams)));
     CAUSTICS_TRY(m.specularPixelLayout, makeBindingLayout(d, {{0, TX}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
     CAUSTICS_TRY(m.specularPixelPipeline, compute(d, "backward_trace/specular_pixels.comp", {m.specularPixelLayout}, 12));
     CAUSTICS_TRY(m.filter, CausticFilterPipelines::create(d));
@@ -110,7 +117,7 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     CAUSTICS_TRY(m.gatherState, d.createStateObject(g));
     CAUSTICS_TRY(m.gatherTable, d.createShaderTable(rhi::ShaderTableDesc{m.gatherState}.setRayGen("rayGen").addMiss("miss").addHitGroup("spheres")));
 
-    // One unit-sphere AABB; NoDuplicateAnyHit because the any-hit shader accumulates (DESIGN.md).
+    // One unit-sphere AABB; NoDuplicateAnyHit because the any-hit shader accumulates (docs/caustics.md, "Second type").
     const float aabb[6] = {-1, -1, -1, 1, 1, 1};
     CAUSTICS_TRY(m.sphereAabb, d.createBuffer(rhi::BufferDesc().setByteSize(sizeof(aabb))
                                                   .setUsage(rhi::BufferUsage::AccelStructInput)

@@ -1,27 +1,24 @@
 #include "composite_pass.h"
 
 #include "caustics/pass_shaders.h"
+#include "composite/composite_bindings.h"
+#include "composite/shaders/composite.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
 namespace {
-struct PushConstants {
-    uint32_t aov;
-    uint32_t hasCaustics;
-    float exposure;
-    float depthRange;
-    uint32_t width, height;
-};
-static_assert(sizeof(PushConstants) == 24);   // Params of composite.comp (GLSL and HLSL)
+using PushConstants = shader::CompositeParams;
+static_assert(sizeof(PushConstants) == 24);
+static_assert(uint32_t(CompositeAov::Final) == shader::kAovFinal && uint32_t(CompositeAov::Direct) == shader::kAovDirect &&
+              uint32_t(CompositeAov::Caustics) == shader::kAovCaustics && uint32_t(CompositeAov::Albedo) == shader::kAovAlbedo &&
+              uint32_t(CompositeAov::Normal) == shader::kAovNormal && uint32_t(CompositeAov::Depth) == shader::kAovDepth);
+const shader_bindings::PassBindings& kBindings = shader_bindings::kCompositeBindings;
 }  // namespace
 
 Result<CompositePass> CompositePass::create(rhi::IDevice& device) {
     CompositePass pass;
-    rhi::BindingLayoutDesc ld;
-    ld.setVisibility(rhi::ShaderStage::Compute);
-    for (uint32_t i = 0; i < 5; ++i) ld.add(i, rhi::BindingType::SampledTexture);
-    ld.add(5, rhi::BindingType::StorageTexture).add(6, rhi::BindingType::StorageTexture);
-    CAUSTICS_TRY(pass.layout_, device.createBindingLayout(ld));
+    CAUSTICS_TRY(pass.layout_, createPassBindingLayout(device, kBindings, 0, rhi::ShaderStage::Compute));
     rhi::ComputePipelineDesc desc;
     CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(device.backend(), "composite/composite.comp"));
     desc.shader.stage = rhi::ShaderStage::Compute;
@@ -51,20 +48,21 @@ CompositeOutputs CompositePass::addToGraph(rg::RenderGraph& graph, const GBuffer
                                                                     gbuffer.height, "hdr")),
                           rg::Access::StorageWrite);
         PushConstants pc{uint32_t(params.aov), hasCaustics ? 1u : 0u, params.exposure, params.depthRange,
-                         gbuffer.width, gbuffer.height};
+                         {gbuffer.width, gbuffer.height}};
         CompositeOutputs o = out;
         rhi::BindingLayoutHandle layout = layout_;
         rhi::ComputePipelineHandle pipeline = pipeline_;
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc sd;
-            sd.add(rhi::BindingSetItem::sampledTexture(0, ctx.texture(d)))
-                .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(c)))
-                .add(rhi::BindingSetItem::sampledTexture(2, ctx.texture(albedo)))
-                .add(rhi::BindingSetItem::sampledTexture(3, ctx.texture(normal)))
-                .add(rhi::BindingSetItem::sampledTexture(4, ctx.texture(depth)))
-                .add(rhi::BindingSetItem::storageTexture(5, ctx.texture(o.display)))
-                .add(rhi::BindingSetItem::storageTexture(6, ctx.texture(o.hdr)));
-            auto set = ctx.device()->createBindingSet(sd, layout);
+            auto sd = PassBindingSet(kBindings, 0)
+                          .texture("direct", ctx.texture(d))
+                          .texture("caustics", ctx.texture(c))
+                          .texture("albedoMetallic", ctx.texture(albedo))
+                          .texture("normalRoughness", ctx.texture(normal))
+                          .texture("linearDepth", ctx.texture(depth))
+                          .texture("display", ctx.texture(o.display))
+                          .texture("hdr", ctx.texture(o.hdr))
+                          .desc();
+            auto set = sd ? ctx.device()->createBindingSet(*sd, layout) : Result<rhi::BindingSetHandle>(makeError(sd.message()));
             if (!set) {
                 log(LogLevel::Error, "composite: " + set.message());
                 return;
@@ -72,7 +70,7 @@ CompositeOutputs CompositePass::addToGraph(rg::RenderGraph& graph, const GBuffer
             ctx.cmd().setComputePipeline(pipeline);
             ctx.cmd().setBindingSet(0, *set);
             ctx.cmd().setPushConstants(&pc, sizeof(pc));
-            ctx.cmd().dispatch((pc.width + 7) / 8, (pc.height + 7) / 8, 1);
+            ctx.cmd().dispatch((pc.size.x + 7) / 8, (pc.size.y + 7) / 8, 1);
         };
     });
     return out;

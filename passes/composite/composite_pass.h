@@ -1,5 +1,5 @@
 #pragma once
-// Pass 7 (DESIGN.md): composite (direct + caustic radiance), exposure, ACES-fitted tone map
+// Pass 7: composite (direct + caustic radiance), exposure, ACES-fitted tone map
 // (Narkowicz 2015), sRGB encode to RGBA8; AOV selection. Compute.
 #include <optional>
 

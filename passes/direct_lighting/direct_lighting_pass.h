@@ -1,5 +1,5 @@
 #pragma once
-// Pass 2 (DESIGN.md): deferred direct lighting with ray-traced shadows (a ray-tracing state object:
+// Pass 2: deferred direct lighting with ray-traced shadows (a ray-tracing state object:
 // raygen per pixel reading the G-buffer, shadow rays with a miss shader; no ray queries). Output:
 // RGBA16_FLOAT linear radiance (cd/m^2 when lights are in candela/lux).
 #include "caustics/frame_context.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Pass 1 (DESIGN.md): the camera G-buffer by rasterization, one draw per scene instance with vertex
+// Pass 1: the camera G-buffer by rasterization, one draw per scene instance with vertex
 // pulling from the GPU scene buffers; writes the six targets of caustics/gbuffer.h.
 #include "caustics/frame_context.h"
 #include "caustics/gbuffer.h"

@@ -1,25 +1,28 @@
 #include "object_id_remap_pass.h"
 
-#include "caustic_filter/caustic_filter.h"   // makeBindingLayout, makeComputePipeline
+#include "caustics/pass_shaders.h"
+#include "gbuffer/remap_object_ids_bindings.h"
+#include "gbuffer/shaders/remap_object_ids.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
 namespace {
-struct PushConstants {
-    uint32_t width, height;
-    uint32_t pairCount;
-    uint32_t pad;
-};
-static_assert(sizeof(PushConstants) == 16);   // Params of remap_object_ids.comp (GLSL and HLSL)
+using PushConstants = shader::ObjectIdRemapParams;
+static_assert(sizeof(PushConstants) == 16);
+const shader_bindings::PassBindings& kBindings = shader_bindings::kRemapObjectIdsBindings;
 }  // namespace
 
 Result<ObjectIdRemapPass> ObjectIdRemapPass::create(rhi::IDevice& device) {
     ObjectIdRemapPass pass;
-    CAUSTICS_TRY(pass.layout_, makeBindingLayout(device, {{0, rhi::BindingType::SampledTexture},
-                                                          {1, rhi::BindingType::StorageBufferRO},
-                                                          {2, rhi::BindingType::StorageTexture}}));
-    CAUSTICS_TRY(pass.pipeline_, makeComputePipeline(device, "gbuffer/remap_object_ids.comp", pass.layout_,
-                                                     sizeof(PushConstants)));
+    CAUSTICS_TRY(pass.layout_, createPassBindingLayout(device, kBindings, 0, rhi::ShaderStage::All));
+    rhi::ComputePipelineDesc desc;
+    CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(device.backend(), "gbuffer/remap_object_ids.comp"));
+    desc.shader.stage = rhi::ShaderStage::Compute;
+    desc.bindings.layouts = {pass.layout_};
+    desc.bindings.pushConstantBytes = sizeof(PushConstants);
+    desc.debugName = "gbuffer/remap_object_ids.comp";
+    CAUSTICS_TRY(pass.pipeline_, device.createComputePipeline(desc));
     return pass;
 }
 
@@ -32,16 +35,17 @@ rg::RgTexture ObjectIdRemapPass::addToGraph(rg::RenderGraph& graph, rg::RgTextur
         out = b.write(b.createTexture("module objectId",
                                       gbufferTextureDesc(GBufferFormats::kObjectId, width, height, "module objectId")),
                       rg::Access::StorageWrite);
-        const PushConstants pc{width, height, pairCount, 0};
+        const PushConstants pc{{width, height}, pairCount, 0};
         rg::RgTexture written = out;
         rhi::BindingLayoutHandle layout = layout_;
         rhi::ComputePipelineHandle pipeline = pipeline_;
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc sd;
-            sd.add(rhi::BindingSetItem::sampledTexture(0, ctx.texture(ids)))
-                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(pairs), false))
-                .add(rhi::BindingSetItem::storageTexture(2, ctx.texture(written)));
-            auto set = ctx.device()->createBindingSet(sd, layout);
+            auto sd = PassBindingSet(kBindings, 0)
+                          .texture("hostObjectId", ctx.texture(ids))
+                          .buffer("pairs", ctx.buffer(pairs))
+                          .texture("moduleObjectId", ctx.texture(written))
+                          .desc();
+            auto set = sd ? ctx.device()->createBindingSet(*sd, layout) : Result<rhi::BindingSetHandle>(makeError(sd.message()));
             if (!set) {
                 log(LogLevel::Error, "gbuffer.object_ids: " + set.message());
                 return;

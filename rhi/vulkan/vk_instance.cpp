@@ -14,7 +14,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBits
     LogLevel level = LogLevel::Debug;
     if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) level = LogLevel::Error;
     else if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) level = LogLevel::Warning;
-    // INFO messages are the loader's and layers' status lines (DESIGN.md): Debug, so the default sink
+    // INFO messages are the loader's and layers' status lines: Debug, so the default sink
     // stays quiet; a host callback still sees them.
     std::string message = "vulkan validation: ";
     if (data->pMessageIdName) message += std::string(data->pMessageIdName) + ": ";

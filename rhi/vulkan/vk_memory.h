@@ -1,7 +1,7 @@
 #pragma once
 // GPU memory: large blocks per (memory type, linear/optimal) sub-allocated with BlockAllocator, and
 // dedicated allocations for resources larger than a block. Vulkan Memory Allocator is not packaged in
-// Debian 12, hence this small allocator (DESIGN.md "GPU memory").
+// Debian 12, hence this small allocator.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>

@@ -20,7 +20,7 @@ BenchMesh makeDisplacedSphere(uint32_t targetTriangles);
 
 // Reorders triangles by the Morton code (Morton 1966; 10 bits per axis) of their centroids within the
 // mesh bounds. lavapipe's BLAS builder splits the index range in order, so an unsorted mesh traces
-// 10-17x slower there (DESIGN.md, measured facts).
+// 10-17x slower there.
 void sortTrianglesMorton(BenchMesh& mesh);
 
 }  // namespace caustics::bench

@@ -1,6 +1,6 @@
 #ifndef CAUSTICS_COMMON_EMISSION_H
 #define CAUSTICS_COMMON_EMISSION_H
-// How a light's flux is shared among the texels of its caustic visibility map (DESIGN.md pass 3).
+// How a light's flux is shared among the texels of its caustic visibility map (docs/caustics.md, "Visibility maps").
 // Perspective maps (point, spot): texel (i, j) of an N x N map with half-angle tangent t covers the
 // rectangle [x0, x1] x [y0, y1] of the plane z = 1 in the light's frame, x_k = t (2k/N - 1). Its
 // solid angle is exact (docs/physics.md, "Texel solid angle"); a photon through it carries

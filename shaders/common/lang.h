@@ -40,6 +40,7 @@ using int2 = glm::ivec2;
 
 using glm::abs;
 using glm::atan;
+using glm::ceil;
 using glm::clamp;
 using glm::cos;
 using glm::cross;

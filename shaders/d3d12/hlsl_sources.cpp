@@ -31,7 +31,7 @@ rhi::ShaderCode shaderCode(std::string_view name) {
     rhi::ShaderCode code;
     code.kind = rhi::ShaderCodeKind::HLSL;
     std::string storage;
-    code.debugName = "shaders/d3d12/" + std::string(withSuffix(name, storage));
+    code.debugName = std::string(withSuffix(name, storage));   // the text's #line markers name the files
     const std::string_view text = source(name);
     code.bytes.assign(text.begin(), text.end());
     return code;

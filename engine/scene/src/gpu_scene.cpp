@@ -164,7 +164,7 @@ Result<GpuScene> GpuScene::create(rhi::IDevice& device, const Scene& sceneIn, co
             tri.indexOffset = uint64_t(r.firstIndex) * sizeof(uint32_t);
             tri.indexCount = r.indexCount;
             const Material* mat = scene.meshes[m].material < scene.materials.size() ? &scene.materials[scene.meshes[m].material] : nullptr;
-            // Any-hit shaders that accumulate must run once per primitive (DESIGN.md, NVIDIA note).
+            // Any-hit shaders that accumulate must run once per primitive (docs/caustics.md, "Second type").
             rhi::GeometryFlags flags = rhi::GeometryFlags::Opaque;
             if (mat && mat->isSpecular()) flags = flags | rhi::GeometryFlags::NoDuplicateAnyHit;
             rhi::AccelStructDesc ad;

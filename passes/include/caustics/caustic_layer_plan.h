@@ -5,7 +5,7 @@
 
 namespace caustics {
 
-// std430 mirror: shaders/vulkan/caustic_maps/layer_plan.glsl (32 bytes).
+// std430, as the shaders see it: shaders/common/layer_plan.h (32 bytes).
 struct CausticLayerPlanGpu {
     uint32_t emitters = 0;          // emitting texels, counted by caustics.emitters
     float raysPerTexel = 0.0f;      // photons per emitting texel: CausticMapGpu::photons / emitters, or the setting

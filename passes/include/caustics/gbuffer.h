@@ -1,5 +1,5 @@
 #pragma once
-// The G-buffer contract (DESIGN.md pass 1). Every pass after the G-buffer reads these W x H textures
+// The G-buffer contract (pass 1). Every pass after the G-buffer reads these W x H textures
 // and nothing else about the camera view; a host engine may supply its own (imported into the graph)
 // as long as it follows the formats and encodings below. Background pixels: depth 1, linearDepth 0,
 // objectId 0 (the other targets are cleared to 0). Which channels a host must supply, and why, is in

@@ -1,8 +1,9 @@
 #pragma once
 // Shader code of every pass for the device's backend, embedded into caustics_passes at build time:
-// SPIR-V compiled from shaders/vulkan/ (passes/CMakeLists.txt) and HLSL text from shaders/d3d12/
-// (compiled at run time by the D3D12 backend). Looked up by the GLSL file's path relative to
-// shaders/vulkan/, e.g. "gbuffer/gbuffer.vert"; the HLSL file of the same name mirrors it.
+// SPIR-V compiled from the GLSL entries (passes/CMakeLists.txt) and HLSL text (compiled at run time by
+// the D3D12 backend). Looked up as "<pass>/<file>": a pass's own passes/<pass>/shaders/<file>
+// (docs/shaders.md), e.g. "composite/composite.comp", or shaders/vulkan/<pass>/<file> for the passes
+// not yet moved, e.g. "gbuffer/gbuffer.vert"; the HLSL entry of the same name mirrors it.
 #include <cstdint>
 #include <span>
 #include <string_view>

@@ -50,7 +50,10 @@ float3 traceSpecularChain(float3 p, float3 n, float3 d, GpuMaterial m, float3 al
         bool split = events <= kSplitEvents && maxComponent(wr) >= kMinBranchWeight && maxComponent(wt) >= kMinBranchWeight;
         if (split) stack[top++] = makeBranch(p, n, l.reflectDirection, wr, events);
         bool refract = split || maxComponent(wt) > maxComponent(wr);
-        ChainBranch b = refract ? makeBranch(p, n, l.refractDirection, wt, events) : makeBranch(p, n, l.reflectDirection, wr, events);
+        // if/else, not ?: (DXC takes only scalar, vector or matrix operands there; docs/d3d12.md).
+        ChainBranch b;
+        if (refract) b = makeBranch(p, n, l.refractDirection, wt, events);
+        else b = makeBranch(p, n, l.reflectDirection, wr, events);
         for (;;) {
             SurfaceHit h = (SurfaceHit)0;
             bool hit = false;

@@ -63,7 +63,11 @@ void splatFirstType(CameraConstants camera, float3 x, float3 nFacing, uint objec
     float tanView = min(sqrt(max(0.0f, 1.0f - cosSurface * cosSurface)) / cosSurface, 20.0f);
     if (abs(pr.depth - gDepth) > gDepth * (1e-3f + 1.5f * footprint * tanView)) return;
     float factor = pinholeSplatFactor(cam, pr.cosTheta, cosSurface, pr.distance);
-    float3 reflected = flux * evalGltfBrdf(brdf, nFacing, incoming, toEye);
+    // The material as the stored hit holds it (metallic and roughness unorm16-packed), as the Vulkan
+    // splat evaluates it (causticHitReflectedFlux): both APIs splat the same radiance.
+    float2 mr = unpackUnorm2x16(packUnorm2x16(float2(brdf.metallic, brdf.roughness)));
+    BrdfMaterial stored = makeBrdfMaterial(brdf.baseColor, mr.x, mr.y, brdf.transmission, brdf.dielectricF0);
+    float3 reflected = flux * evalGltfBrdf(stored, nFacing, incoming, toEye);
     addRadiance(uint(px.y) * camera.frame.x + uint(px.x), reflected * factor);
     statAdd(kStatSplats, 1u);
 }

@@ -2,7 +2,11 @@
 // Quoted #include directives are inlined recursively (each file once per entry, like #pragma once,
 // with #line markers so DXC's messages name the original file and line); angle-bracket includes are
 // left alone (they only occur in the C++ branch of shaders/common/lang.h, which DXC skips).
-// Usage: embed_hlsl OUT.cpp ROOT1|ROOT2 NAME1 NAME2 ...   (names relative to ROOT1, e.g. gbuffer/gbuffer.vert.hlsl)
+// Usage: embed_hlsl OUT.cpp ROOT1|ROOT2|... ENTRY...   An entry is a name relative to ROOT1 (e.g.
+// gbuffer/gbuffer.vert.hlsl) or NAME=FILE: a pass's own shader (docs/shaders.md), passes/<pass>/shaders/
+// <x>.hlsl embedded as "<pass>/<x>.<stage>.hlsl" behind `#define CAUSTICS_STAGE_<STAGE> 1`, so one file
+// can hold the entries of several stages. Shown file names are relative to the last root (the project).
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -56,7 +60,7 @@ bool inlineFile(const fs::path& file, const fs::path& includer, const std::vecto
     std::istringstream in(text);
     std::string line;
     int number = 0;
-    // Names relative to the last root (shaders/): no build-machine paths in the library.
+    // Names relative to the last root (the project): no build-machine paths in the library.
     const std::string shown = fs::relative(canonical, fs::weakly_canonical(roots.back())).generic_string();
     out += "#line 1 \"" + shown + "\"\n";
     while (std::getline(in, line)) {
@@ -100,10 +104,18 @@ int main(int argc, char** argv) {
            "#include \"caustics/hlsl_sources.h\"\n\nnamespace caustics::hlsl::generated {\n\n";
     std::vector<std::string> names;
     for (int a = 3; a < argc; ++a) {
-        const std::string name = argv[a];
+        std::string name = argv[a];
+        fs::path file = roots.at(0) / name;
         std::string text, error;
+        if (const size_t eq = name.find('='); eq != std::string::npos) {
+            file = name.substr(eq + 1);
+            name.resize(eq);
+            std::string stage = fs::path(name).stem().extension().string().substr(1);   // x.comp.hlsl -> comp
+            for (char& c : stage) c = char(std::toupper(static_cast<unsigned char>(c)));
+            text = "#define CAUSTICS_STAGE_" + stage + " 1\n";
+        }
         std::set<fs::path> seen;
-        if (!inlineFile(roots.at(0) / name, {}, roots, seen, text, error)) {
+        if (!inlineFile(file, {}, roots, seen, text, error)) {
             std::cerr << "embed_hlsl: " << error << "\n";
             return 1;
         }

@@ -7,7 +7,7 @@ namespace caustics::test {
 VKAPI_ATTR VkBool32 VKAPI_CALL RawVulkanHost::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                         VkDebugUtilsMessageTypeFlagsEXT,
                                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-    // INFO lines are the layer's status (DESIGN.md); warnings and errors fail the tests.
+    // INFO lines are the layer's status; warnings and errors fail the tests.
     if (!(severity & (VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT)))
         return VK_FALSE;
     auto* host = static_cast<RawVulkanHost*>(user);

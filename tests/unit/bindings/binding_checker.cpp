@@ -1,18 +1,31 @@
 #include "binding_checker.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace caustics::test {
 namespace {
 
-std::string glslPath(const std::string& sourceDir, const std::string& name) {
-    return sourceDir + "/shaders/vulkan/" + name;
+// "<pass>/<file>": a moved pass's own shaders/ folder, else shaders/vulkan/ (docs/shaders.md).
+bool isPassOwned(const std::string& sourceDir, const std::string& name) {
+    const size_t slash = name.find('/');
+    return slash != std::string::npos &&
+           std::filesystem::exists(sourceDir + "/passes/" + name.substr(0, slash) + "/shaders/" + name.substr(slash + 1));
 }
 
-std::string fileOf(ShaderLanguage language, const std::string& name) {
-    return language == ShaderLanguage::Glsl ? "shaders/vulkan/" + name : "shaders/d3d12/" + name + ".hlsl";
+std::string glslFile(const std::string& sourceDir, const std::string& name) {
+    if (!isPassOwned(sourceDir, name)) return "shaders/vulkan/" + name;
+    const size_t slash = name.find('/');
+    return "passes/" + name.substr(0, slash) + "/shaders/" + name.substr(slash + 1);
+}
+
+std::string fileOf(ShaderLanguage language, const std::string& sourceDir, const std::string& name) {
+    if (language == ShaderLanguage::Glsl) return glslFile(sourceDir, name);
+    if (!isPassOwned(sourceDir, name)) return "shaders/d3d12/" + name + ".hlsl";
+    const std::string glsl = glslFile(sourceDir, name);
+    return glsl.substr(0, glsl.rfind('.')) + ".hlsl";
 }
 
 std::string describe(const DeclaredBinding& b, ShaderLanguage language) {
@@ -78,13 +91,15 @@ std::vector<std::string> checkPipelineBindings(const RecordedPipeline& p, Shader
     for (const RecordedShader& shader : p.shaders) {
         if (std::find(seen.begin(), seen.end(), shader.name) != seen.end()) continue;
         seen.push_back(shader.name);
-        const std::string where = fileOf(language, shader.name);
+        const std::string where = fileOf(language, sourceDir, shader.name);
         std::optional<std::string> source;
         std::vector<std::string> includeDirs;
         if (language == ShaderLanguage::Glsl) {
-            std::string entry = glslPath(sourceDir, shader.name);
+            std::string entry = sourceDir + "/" + glslFile(sourceDir, shader.name);
             source = glslFiles(entry);
-            includeDirs = {entry.substr(0, entry.rfind('/')), sourceDir + "/shaders/vulkan", sourceDir + "/shaders"};
+            // The include path of the GLSL build (passes/CMakeLists.txt), generated bindings included.
+            includeDirs = {entry.substr(0, entry.rfind('/')), sourceDir + "/shaders", sourceDir + "/shaders/vulkan",
+                           std::string(CAUSTICS_GENERATED_SHADERS_DIR) + "/glsl"};
         } else if (!shader.hlsl.empty()) {
             source = shader.hlsl;
         }

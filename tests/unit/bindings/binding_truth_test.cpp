@@ -53,14 +53,27 @@ TEST(BindingTruth, EveryPassShaderEntryPointIsCreatedByAPass) {
     std::set<std::string> used;
     for (const RecordedPipeline& p : allPipelines())
         for (const RecordedShader& s : p.shaders) used.insert(s.name);
-    const std::filesystem::path root = std::filesystem::path(CAUSTICS_SOURCE_DIR) / "shaders" / "vulkan";
+    namespace fs = std::filesystem;
+    const fs::path root = fs::path(CAUSTICS_SOURCE_DIR) / "shaders" / "vulkan";
+    const fs::path passes = fs::path(CAUSTICS_SOURCE_DIR) / "passes";
     const std::set<std::string> stages = {".rgen", ".rmiss", ".rchit", ".rahit", ".rint", ".comp", ".vert", ".frag"};
     int entryPoints = 0;
-    for (const auto& f : std::filesystem::recursive_directory_iterator(root)) {
+    for (const auto& f : fs::recursive_directory_iterator(root)) {
         if (!stages.count(f.path().extension().string())) continue;
         ++entryPoints;
-        const std::string name = std::filesystem::relative(f.path(), root).generic_string();
+        const std::string name = fs::relative(f.path(), root).generic_string();
         EXPECT_TRUE(used.count(name)) << "shaders/vulkan/" << name << " is not used by any pass pipeline";
+    }
+    // A pass's own entries, passes/<pass>/shaders/<file>, are looked up as "<pass>/<file>" (docs/shaders.md).
+    for (const auto& pass : fs::directory_iterator(passes)) {
+        if (!fs::is_directory(pass.path() / "shaders")) continue;
+        for (const auto& f : fs::directory_iterator(pass.path() / "shaders")) {
+            if (!stages.count(f.path().extension().string())) continue;
+            ++entryPoints;
+            const std::string name = pass.path().filename().string() + "/" + f.path().filename().string();
+            EXPECT_TRUE(used.count(name)) << fs::relative(f.path(), passes.parent_path()).generic_string()
+                                          << " is not used by any pass pipeline";
+        }
     }
     EXPECT_GT(entryPoints, 20);
 }

@@ -69,7 +69,7 @@ private:
     rhi::BindingLayoutHandle layout_;
 };
 
-// "shaders/d3d12/forward_trace/forward.rgen.hlsl" -> "forward_trace/forward.rgen"
+// "forward_trace/forward.rgen.hlsl" (caustics::hlsl::shaderCode) -> "forward_trace/forward.rgen"
 std::string passShaderName(const std::string& debugName) {
     std::string n = debugName;
     const std::string prefix = "shaders/d3d12/", suffix = ".hlsl";

@@ -1,5 +1,6 @@
-// Text checks of the D3D12 HLSL (no DXC here to compile it): every GLSL entry point of
-// shaders/vulkan has an HLSL counterpart shaders/d3d12/<same path>.hlsl, embedded and self-contained,
+// Text checks of the D3D12 HLSL (no DXC here to compile it): every GLSL entry point has an HLSL
+// counterpart (a pass's own passes/<pass>/shaders/<x>.<stage> beside <x>.hlsl, docs/shaders.md; the
+// others under shaders/vulkan/<path> and shaders/d3d12/<path>.hlsl), embedded and self-contained,
 // declaring the `main` entry point of its stage, and every resource names its register space.
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@ namespace caustics::hlsl {
 namespace {
 
 const fs::path kShaders = fs::path(CAUSTICS_SOURCE_DIR) / "shaders";
+const fs::path kPasses = fs::path(CAUSTICS_SOURCE_DIR) / "passes";
 
 // GLSL stage extension -> what the HLSL must declare for it.
 const std::map<std::string, std::string>& stageMarkers() {
@@ -32,19 +34,41 @@ const std::map<std::string, std::string>& stageMarkers() {
     return m;
 }
 
+bool isStage(const fs::path& p) { return stageMarkers().count(p.extension().string()) != 0; }
+
+// A pass's own GLSL entries: passes/<pass>/shaders/<x>.<stage>, named "<pass>/<x>.<stage>".
+std::vector<fs::path> ownGlslFiles() {
+    std::vector<fs::path> out;
+    for (const auto& pass : fs::directory_iterator(kPasses))
+        if (fs::is_directory(pass.path() / "shaders"))
+            for (const auto& e : fs::directory_iterator(pass.path() / "shaders"))
+                if (e.is_regular_file() && isStage(e.path())) out.push_back(e.path());
+    return out;
+}
+
 std::vector<std::string> glslEntryPoints() {
     std::vector<std::string> out;
     for (const auto& e : fs::recursive_directory_iterator(kShaders / "vulkan"))
-        if (e.is_regular_file() && stageMarkers().count(e.path().extension().string()))
+        if (e.is_regular_file() && isStage(e.path()))
             out.push_back(fs::relative(e.path(), kShaders / "vulkan").generic_string());
+    for (const fs::path& f : ownGlslFiles())
+        out.push_back(f.parent_path().parent_path().filename().string() + "/" + f.filename().string());
     return out;
 }
 
 TEST(HlslSources, EveryGlslEntryPointHasAnHlslFileWithTheSameStem) {
     const auto entries = glslEntryPoints();
     ASSERT_FALSE(entries.empty());
-    for (const std::string& e : entries)
-        EXPECT_TRUE(fs::exists(kShaders / "d3d12" / (e + ".hlsl"))) << "missing shaders/d3d12/" << e << ".hlsl";
+    for (const auto& e : fs::recursive_directory_iterator(kShaders / "vulkan"))
+        if (e.is_regular_file() && isStage(e.path())) {
+            const std::string rel = fs::relative(e.path(), kShaders / "vulkan").generic_string();
+            EXPECT_TRUE(fs::exists(kShaders / "d3d12" / (rel + ".hlsl"))) << "missing shaders/d3d12/" << rel << ".hlsl";
+        }
+    for (const fs::path& f : ownGlslFiles()) {
+        fs::path hlsl = f;
+        hlsl.replace_extension(".hlsl");
+        EXPECT_TRUE(fs::exists(hlsl)) << "missing " << fs::relative(hlsl, kPasses.parent_path()).generic_string();
+    }
 }
 
 TEST(HlslSources, EveryGlslEntryPointIsEmbedded) {
@@ -99,7 +123,7 @@ TEST(HlslSources, LookupAcceptsTheSuffixAndRejectsUnknownNames) {
 TEST(HlslSources, ShaderCodeIsHlslNamedAfterTheFile) {
     rhi::ShaderCode code = shaderCode("composite/composite.comp");
     EXPECT_EQ(code.kind, rhi::ShaderCodeKind::HLSL);
-    EXPECT_EQ(code.debugName, "shaders/d3d12/composite/composite.comp.hlsl");
+    EXPECT_EQ(code.debugName, "composite/composite.comp.hlsl");
     EXPECT_EQ(code.bytes.size(), source("composite/composite.comp").size());
 }
 

@@ -77,7 +77,7 @@ TEST(D3D12ShaderTable, DispatchRaysRegionsPointIntoTheTable) {
     EXPECT_EQ(d.MissShaderTable.StrideInBytes, image->layout.miss.stride);
     EXPECT_EQ(d.HitGroupTable.SizeInBytes, image->layout.hitGroup.size);
     EXPECT_EQ(d.CallableShaderTable.StartAddress, 0u);   // empty region
-    EXPECT_EQ(d.Depth, 3u);   // light index as the third grid dimension (DESIGN.md pass 3)
+    EXPECT_EQ(d.Depth, 3u);   // light index as the third grid dimension
 }
 
 }  // namespace

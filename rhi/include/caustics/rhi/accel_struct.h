@@ -14,7 +14,7 @@ namespace caustics::rhi {
 enum class GeometryFlags : uint32_t {
     None = 0,
     Opaque = 1u << 0,
-    // Any-hit runs exactly once per primitive; needed by any-hit shaders that accumulate (DESIGN.md).
+    // Any-hit runs exactly once per primitive; needed by any-hit shaders that accumulate (docs/caustics.md, "Second type").
     NoDuplicateAnyHit = 1u << 1,
 };
 constexpr GeometryFlags operator|(GeometryFlags a, GeometryFlags b) { return GeometryFlags(uint32_t(a) | uint32_t(b)); }

@@ -1,9 +1,10 @@
 #pragma once
 // The HLSL of every pass for the D3D12 backend, embedded at build time (shaders/d3d12/CMakeLists.txt):
-// each shaders/d3d12/<pass>/<glsl file name>.hlsl is stored with its includes inlined, so the text
-// compiles on its own with dxcompiler. Names mirror the SPIR-V lookup: the GLSL entry's path relative
-// to shaders/vulkan, e.g. source("gbuffer/gbuffer.vert") or source("forward_trace/forward.rgen")
-// (".hlsl" may be appended). Every file's entry point is `main` (as in GLSL).
+// a pass's own passes/<pass>/shaders/<x>.hlsl (docs/shaders.md) once per GLSL entry <x>.<stage> beside
+// it, and shaders/d3d12/<pass>/<glsl file name>.hlsl of the passes not yet moved, each stored with its
+// includes inlined, so the text compiles on its own with dxcompiler. Names mirror the SPIR-V lookup,
+// e.g. source("composite/composite.comp") or source("forward_trace/forward.rgen") (".hlsl" may be
+// appended). Every file's entry point is `main` (as in GLSL).
 #include <cstddef>
 #include <string_view>
 #include <vector>
@@ -16,7 +17,7 @@ namespace caustics::hlsl {
 std::string_view source(std::string_view name);
 // Every embedded name (with the .hlsl suffix), sorted as generated.
 std::vector<std::string_view> names();
-// ShaderCode{HLSL, text, "shaders/d3d12/<name>.hlsl"} for the D3D12 backend; bytes empty if unknown.
+// ShaderCode{HLSL, text, "<name>.hlsl"} for the D3D12 backend; bytes empty if unknown.
 rhi::ShaderCode shaderCode(std::string_view name);
 
 namespace generated {

@@ -1,6 +1,6 @@
 #pragma once
 // Geometry helpers over the CPU scene: bounds, triangle counts, normal generation and the spatial
-// (Morton) triangle sort that BLAS builders need (DESIGN.md: lavapipe traces random-order triangles
+// (Morton) triangle sort that BLAS builders need (lavapipe traces random-order triangles
 // 10-17x slower because its builder splits the index range in order).
 #include <cstdint>
 #include <limits>

@@ -9,7 +9,7 @@
 
 namespace caustics::scene {
 
-// Optical properties the caustic passes need (DESIGN.md pass 1), derived from glTF PBR
+// Optical properties the caustic passes need (docs/physics.md), derived from glTF PBR
 // metallic-roughness + KHR_materials_transmission/ior/volume/specular.
 struct Material {
     std::string name;

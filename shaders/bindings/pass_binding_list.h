@@ -1,0 +1,14 @@
+#pragma once
+// Every pass whose shader resources are declared once (shader_binding.h): the generator writes the
+// GLSL and HLSL declarations of each. A pass adopting the scheme adds its declaration here and its
+// name to CAUSTICS_PASS_BINDINGS (shaders/bindings/CMakeLists.txt).
+#include "composite/composite_bindings.h"
+#include "caustic_maps/grid_from_count_bindings.h"
+#include "caustic_maps/photon_plan_bindings.h"
+#include "gbuffer/remap_object_ids_bindings.h"
+
+namespace caustics::shader_bindings {
+
+inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings};
+
+}  // namespace caustics::shader_bindings

@@ -1,0 +1,45 @@
+#pragma once
+// A pass's shader resources, declared once in C++ (docs/shaders.md, "Bindings"). From one PassBindings
+// the build generates the GLSL and HLSL declarations its shader shims include
+// (shaders/bindings/generate_bindings.cpp), and the pass creates its binding layout and fills its
+// binding sets by name (passes/include/caustics/pass_bindings.h). Dependency-free: the generator is a
+// host tool, also in cross builds.
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace caustics::shader_bindings {
+
+// The resource kinds, in the order of rhi::BindingType (checked in passes/module/pass_bindings.cpp).
+enum class Kind : uint8_t {
+    ConstantBuffer,    // GLSL std140 uniform block / HLSL ConstantBuffer<T>
+    StorageBufferRO,   // GLSL readonly std430 buffer of T[] / HLSL ByteAddressBuffer
+    StorageBufferRW,   // GLSL std430 buffer of T[] / HLSL RWByteAddressBuffer
+    SampledTexture,    // GLSL texture2D (utexture2D for uint) / HLSL Texture2D<T>
+    StorageTexture,    // GLSL image2D with the format / HLSL RWTexture2D<T>
+    Sampler,
+    AccelStruct,
+};
+
+// Storage-texture formats (their GLSL layout qualifier, the HLSL element type, the C++ format).
+enum class ImageFormat : uint8_t { None, Rgba8, Rgba16f, Rgba32f, R32f, R32ui };
+
+struct Binding {
+    std::string_view name;      // the shader-visible name, and the key a binding set is filled by
+    Kind kind;
+    uint32_t set;               // Vulkan descriptor set = D3D12 register space
+    uint32_t slot;              // Vulkan binding = D3D12 register number within its class
+    std::string_view element;   // shared-dialect element type: float4, uint, uint2 or a struct name
+    ImageFormat format = ImageFormat::None;   // storage textures only
+    uint32_t stride = 0;        // storage buffers of a struct: its std430 size (built-in types: derived)
+};
+
+struct PassBindings {
+    std::string_view name;        // generated header "bindings/<name>.h", one per language
+    std::string_view declaredIn;  // the C++ header holding this declaration (named in the generated text)
+    std::span<const Binding> bindings;
+    std::string_view pushType;    // shared-dialect struct of the push constants; empty: none
+    std::string_view pushName;    // the global the push constants are visible as
+};
+
+}  // namespace caustics::shader_bindings

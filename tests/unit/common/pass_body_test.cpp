@@ -1,0 +1,125 @@
+// The pass bodies (passes/<pass>/shaders/<name>.h, docs/shaders.md) compiled as C++: the compiler
+// type-checks the code the GLSL and HLSL entries run, and these tests pin its behaviour.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "composite/shaders/composite.h"
+#include "caustic_maps/shaders/grid_from_count.h"
+#include "caustic_maps/shaders/photon_plan.h"
+#include "gbuffer/shaders/remap_object_ids.h"
+
+namespace caustics::shader {
+
+namespace {
+std::vector<uint2> gPairs;   // the remap body's storage buffer (bindings/remap_object_ids.h on the GPU)
+}  // namespace
+uint2 pairsLoad(uint i) { return gPairs.at(i); }
+
+namespace {
+std::vector<uint> gCounters, gGrid;   // the grid-from-count body's buffers
+}  // namespace
+uint countersLoad(uint i) { return gCounters.at(i); }
+void gridStore(uint i, uint v) { gGrid.at(i) = v; }
+
+namespace {
+std::vector<float> gMapWords;   // the photon plan's buffers
+std::vector<CausticLayerPlan> gPlans;
+std::vector<uint> gArgs(3);
+}  // namespace
+float mapWordsLoad(uint i) { return gMapWords.at(i); }
+CausticLayerPlan plansLoad(uint i) { return gPlans.at(i); }
+void plansStore(uint i, CausticLayerPlan plan) { gPlans.at(i) = plan; }
+void argsStore(uint i, uint v) { gArgs.at(i) = v; }
+
+namespace {
+
+CompositeParams params(uint aov, uint hasCaustics) { return {aov, hasCaustics, 2.0f, 10.0f, uint2(4, 4)}; }
+
+CompositeInputs inputs() {
+    CompositeInputs t;
+    t.direct = float3(0.25f, 0.5f, 0.125f);
+    t.caustics = float3(1.0f, 0.0f, 0.5f);
+    t.albedo = float3(0.5f);
+    t.normal = float3(0.0f, -1.0f, 0.0f);
+    t.linearDepth = 2.5f;
+    return t;
+}
+
+// Exact compares: the body is the same float arithmetic as the references it is compared with.
+TEST(CompositeBody, FinalAovIsDirectPlusCausticsExposedAndToneMapped) {
+    CompositeOutput o = compositePixel(params(kAovFinal, 1u), inputs());
+    EXPECT_EQ(o.linearValue, inputs().direct + inputs().caustics);
+    EXPECT_EQ(o.shown, srgbEncode(acesFitted((inputs().direct + inputs().caustics) * 2.0f)));
+}
+
+TEST(CompositeBody, WithoutCausticsTheRepeatedBindingIsNotAdded) {
+    CompositeOutput o = compositePixel(params(kAovCaustics, 0u), inputs());
+    EXPECT_EQ(o.linearValue, float3(0.0f));
+    EXPECT_EQ(compositePixel(params(kAovFinal, 0u), inputs()).linearValue, inputs().direct);
+}
+
+TEST(CompositeBody, NormalAovIsRemappedToZeroOneWithoutTheSrgbCurve) {
+    CompositeOutput o = compositePixel(params(kAovNormal, 1u), inputs());
+    EXPECT_EQ(o.shown, float3(0.5f, 0.0f, 0.5f));
+    EXPECT_EQ(o.linearValue, inputs().normal);
+}
+
+TEST(CompositeBody, DepthAovIsWhiteNearTheCameraAndBlackForTheBackground) {
+    EXPECT_FLOAT_EQ(compositePixel(params(kAovDepth, 1u), inputs()).shown.x, 1.0f - 2.5f / 10.0f);
+    CompositeInputs background = inputs();
+    background.linearDepth = 0.0f;   // the G-buffer clears to 0 where nothing was drawn
+    EXPECT_EQ(compositePixel(params(kAovDepth, 1u), background).shown, float3(0.0f));
+}
+
+TEST(RemapObjectIdsBody, ListedHostIdsFindTheirModuleIdAndOthersBecomeBackground) {
+    gPairs = {{3, 10}, {7, 11}, {8, 12}, {40, 13}, {1000, 14}};   // sorted by host id
+    EXPECT_EQ(moduleObjectIdOf(3, 5), 10u);
+    EXPECT_EQ(moduleObjectIdOf(8, 5), 12u);
+    EXPECT_EQ(moduleObjectIdOf(1000, 5), 14u);
+    EXPECT_EQ(moduleObjectIdOf(0, 5), 0u);
+    EXPECT_EQ(moduleObjectIdOf(9, 5), 0u);
+    EXPECT_EQ(moduleObjectIdOf(5000, 5), 0u);   // past the last pair: no read beyond pairCount (at() throws)
+    EXPECT_EQ(moduleObjectIdOf(1000, 4), 0u);   // only the first pairCount pairs are the map
+}
+
+TEST(GridFromCountBody, LaunchesFollowTheCounterUpToTheCapAndNoneWhenTheGateIsZero) {
+    gCounters = {500, 7, 0};
+    gGrid = {9, 9, 9};
+    writeGridFromCount({0, 100, 1});
+    EXPECT_EQ(gGrid, (std::vector<uint>{100, 1, 1}));   // capped
+    writeGridFromCount({1, 100, 0});
+    EXPECT_EQ(gGrid, (std::vector<uint>{7, 1, 1}));
+    writeGridFromCount({0, 100, 2});
+    EXPECT_EQ(gGrid, (std::vector<uint>{0, 1, 1}));     // gate counter 0: no sphere, no gather
+}
+
+// Layers with budgets of 100, 50 and 0 photons (0: raysPerTexel per texel) and 10, 0 and 4 emitters.
+void planThreeLayers() {
+    gMapWords.assign(3 * kCausticMapWords, 0.0f);
+    gMapWords[0 * kCausticMapWords + kCausticMapPhotonsWord] = 100.0f;
+    gMapWords[1 * kCausticMapWords + kCausticMapPhotonsWord] = 50.0f;
+    gPlans.assign(3, CausticLayerPlan{});
+    gPlans[0].emitters = 10;
+    gPlans[2].emitters = 4;
+    planPhotons({3, 2.5f});
+}
+
+TEST(PhotonPlanBody, ALayerWithoutEmittersHandsItsShareToTheOthers) {
+    planThreeLayers();
+    EXPECT_FLOAT_EQ(gPlans[0].raysPerTexel, 15.0f);   // (100 + 50) photons over 10 texels
+    EXPECT_EQ(gPlans[0].launches, 150u);
+    EXPECT_EQ(gPlans[1].launches, 0u);
+}
+
+TEST(PhotonPlanBody, ALayerWithoutABudgetEmitsRaysPerTexelAndLaunchRangesFollowEachOther) {
+    planThreeLayers();
+    EXPECT_FLOAT_EQ(gPlans[2].raysPerTexel, 2.5f);
+    EXPECT_EQ(gPlans[2].samplesPerTexel, 3u);   // the last sample of a texel is emitted with p = 0.5
+    EXPECT_EQ(gPlans[2].launchOffset, 150u);
+    EXPECT_EQ(gPlans[2].launches, 12u);
+    EXPECT_EQ(gArgs, (std::vector<uint>{162, 1, 1}));
+}
+
+}  // namespace
+}  // namespace caustics::shader
