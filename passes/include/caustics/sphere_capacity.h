@@ -37,11 +37,11 @@ uint32_t sphereTlasCapacity(std::optional<uint32_t> earlierCount, uint32_t pixel
 // The first allocation at an output size follows what the camera sees of the specular surfaces, not
 // W x H: `specularCoverage` is the part of the image their bounding spheres' images cover (the sum of
 // imageCoverage over the specular instances, caustics/caustic_importance.h), an upper bound of the
-// specular pixels but for the sub-pixel rim and overlaps, which kSpecularCoverageMargin covers. The
-// result is rounded up to the capacity's bucket, at least kMinSphereAllocation (2^14: test images up to
+// specular pixels (a pixel is specular when its centre sees the object, inside that image; overlaps are
+// counted twice), so kSpecularCoverageMargin is 1. The result is rounded up to the capacity's bucket, at least kMinSphereAllocation (2^14: test images up to
 // 128x128 get a slot per pixel), at most W x H. A view whose specular pixels exceed it grows it within
 // framesInFlight + 1 frames, dropping (and counting) the excess meanwhile, as for any jump of the count.
-inline constexpr double kSpecularCoverageMargin = 1.25;
+inline constexpr double kSpecularCoverageMargin = 1.0;
 inline constexpr uint32_t kMinSphereAllocation = 1u << 14;
 uint32_t initialSphereAllocation(uint32_t pixels, double specularCoverage);
 

@@ -41,15 +41,15 @@ TEST(SphereCapacity, NoEarlierSphereMeansNoBuild) {
     EXPECT_EQ(sphereTlasCapacity(0u, kPixels), 0u);
 }
 
-// The first allocation follows the specular surfaces in view (1.25 x their bounding spheres' coverage,
-// bucketed like a capacity), not the image size.
+// The first allocation follows the specular surfaces in view (their bounding spheres' coverage, bucketed
+// like a capacity), not the image size.
 TEST(SphereAllocation, FirstAllocationFollowsTheSpecularSurfacesInView) {
     const uint32_t uhd = 3840u * 2160u;
     EXPECT_EQ(initialSphereAllocation(kPixels, 0.0), kMinSphereAllocation) << "nothing specular in view: the floor";
     EXPECT_EQ(initialSphereAllocation(uhd, 0.0), kMinSphereAllocation) << "whatever the image size";
     EXPECT_EQ(initialSphereAllocation(kPixels, 1.0), kPixels) << "specular everywhere: a slot per pixel";
-    // 1 % of a 4K image: 1.25 x 82,944 = 103,680 slots, rounded up to the bucket (2^14 past 2^16): 114,688.
-    EXPECT_EQ(initialSphereAllocation(uhd, 0.01), 114688u);
+    // 1 % of a 4K image: 82,944 slots, rounded up to the bucket (2^14 past 2^16): 98,304.
+    EXPECT_EQ(initialSphereAllocation(uhd, 0.01), 98304u);
     EXPECT_GE(initialSphereAllocation(uhd, 0.01), uint32_t(kSpecularCoverageMargin * 0.01 * uhd));
     EXPECT_EQ(initialSphereAllocation(128u * 128u, 0.0), 128u * 128u) << "128x128 test images keep a slot per pixel";
     EXPECT_EQ(initialSphereAllocation(64u * 64u, 0.5), 64u * 64u) << "at most W x H";
