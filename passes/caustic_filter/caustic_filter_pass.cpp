@@ -111,11 +111,11 @@ struct HistoryHandles {
 
 HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& history) {
     const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
-    const rhi::ResourceState now = history.valid ? ro : rhi::ResourceState::Undefined;
+    const rhi::ResourceState now = history.builtValid ? ro : rhi::ResourceState::Undefined;
     auto import = [&](const char* name, const rhi::TextureHandle (&t)[2], uint32_t i) {
         return graph.importTexture(std::string(name) + std::to_string(i), t[i], now, ro);
     };
-    const uint32_t previous = history.parity, next = history.parity ^ 1u;
+    const uint32_t previous = history.builtParity, next = history.builtParity ^ 1u;
     return {import("caustics.historyColor", history.color, previous),
             import("caustics.historyMoments", history.moments, previous),
             import("caustics.historyGuides", history.guides, previous),
@@ -247,7 +247,11 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     const GBuffer& g = f.in->gbuffer;
     // The view's history (caustic_passes.h): valid only after an executed frame of this view.
     HistoryHandles hist = importHistory(graph, *f.history);
-    const bool historyUsable = f.history->valid && !f.in->resetHistory;
+    const bool historyUsable = f.history->builtValid && !f.in->resetHistory;
+    // The next graph built reads what this one writes (caustic_passes.h, CausticViewHistory::builtParity).
+    const uint32_t readCopy = f.history->builtParity;
+    f.history->builtParity ^= 1u;
+    f.history->builtValid = true;
     // caustics.resolve's combined radiance: this frame's photons, zero in every tile the list leaves out;
     // the filter's last pass writes its result into it over the listed tiles.
     const rg::RgTexture raw = out.radiance;
@@ -266,8 +270,11 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
         CausticFrame fr = f;
         HistoryHandles o = hist;
         FilterTiles t = tiles;
-        struct { uint32_t historyValid; float maxHistory; } push{historyUsable ? 1u : 0u, float(s.filterMaxHistory)};
+        struct { uint32_t historyValid; float maxHistory; } built{historyUsable ? 1u : 0u, float(s.filterMaxHistory)};
         return [=](rg::PassContext& ctx) {
+            // Only if the last EXECUTED frame wrote the copy this one reads (a dropped graph breaks it).
+            auto push = built;
+            push.historyValid &= (fr.history->valid && fr.history->parity == readCopy) ? 1u : 0u;
             rhi::BindingSetDesc d = textureBindings(ctx, 1, {in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7]}, {});
             d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(fr.camera)))
                 .add(rhi::BindingSetItem::storageBuffer(9, ctx.buffer(t.list), false))
@@ -278,7 +285,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
                 // Committed when recorded, not when the graph was built: this frame's copy is the next
                 // frame's previous one.
                 fr.history->valid = true;
-                fr.history->parity ^= 1u;
+                fr.history->parity = readCopy ^ 1u;
             }
         };
     });

@@ -195,10 +195,10 @@ Status CausticResources::Impl::ensureHistory(CausticViewHistory& h, uint32_t wid
         CAUSTICS_TRY(h.guides[i], make(width, height, rhi::Format::RGBA32_UINT, "caustics.historyGuides" + n));
         CAUSTICS_TRY(h.tiles[i], make((width + 7) / 8, (height + 7) / 8, rhi::Format::R32_UINT, "caustics.historyTiles" + n));
     }
-    h.parity = 0;
+    h.parity = h.builtParity = 0;
     h.width = width;
     h.height = height;
-    h.valid = false;
+    h.valid = h.builtValid = false;
     return okStatus();
 }
 
