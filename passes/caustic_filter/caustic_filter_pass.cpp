@@ -245,7 +245,17 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
 
     const uint32_t w = f.width, h = f.height;
     const GBuffer& g = f.in->gbuffer;
-    // The view's history (caustic_passes.h): valid only after an executed frame of this view.
+    // The view's history (caustic_passes.h): valid only after an executed frame of this view. A
+    // previous build that never executed and is superseded (same or earlier frame) is undone first.
+    CausticViewHistory& vh = *f.history;
+    const uint32_t frameIndex = f.in->frameIndex;
+    if (vh.lastBuiltFrame && vh.lastBuiltFrame != vh.lastExecutedFrame && frameIndex <= *vh.lastBuiltFrame) {
+        vh.builtParity = vh.parityBeforeLastBuild;
+        vh.builtValid = vh.validBeforeLastBuild;
+    }
+    vh.parityBeforeLastBuild = vh.builtParity;
+    vh.validBeforeLastBuild = vh.builtValid;
+    vh.lastBuiltFrame = frameIndex;
     HistoryHandles hist = importHistory(graph, *f.history);
     const bool historyUsable = f.history->builtValid && !f.in->resetHistory;
     // The next graph built reads what this one writes (caustic_passes.h, CausticViewHistory::builtParity).
@@ -286,6 +296,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
                 // frame's previous one.
                 fr.history->valid = true;
                 fr.history->parity = readCopy ^ 1u;
+                fr.history->lastExecutedFrame = frameIndex;
             }
         };
     });

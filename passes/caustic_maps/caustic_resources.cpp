@@ -199,6 +199,8 @@ Status CausticResources::Impl::ensureHistory(CausticViewHistory& h, uint32_t wid
     h.width = width;
     h.height = height;
     h.valid = h.builtValid = false;
+    h.lastBuiltFrame.reset();
+    h.lastExecutedFrame.reset();
     return okStatus();
 }
 

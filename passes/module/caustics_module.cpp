@@ -179,14 +179,6 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         return makeError("CausticsModule::addPasses: the settings need pipelines the module has not made (a "
                          "failed prepare()): call prepare() (it records and submits on the host's queue)");
     CausticsView::Impl& view = in.view ? in.view->impl() : m.defaultView->impl();
-    // frameIndex seeds the photons: a host handing its frame-in-flight slot here repeats them every
-    // framesInFlight frames. Equal is fine (the same frame built again), and so is a restart of the count
-    // with a camera cut (resetHistory).
-    if (view.lastBuiltFrame && in.frameIndex < *view.lastBuiltFrame && !in.resetHistory)
-        return makeError("CausticsModule::addPasses: FrameInputs::frameIndex " + std::to_string(in.frameIndex) +
-                         " is below the view's last frame " + std::to_string(*view.lastBuiltFrame) +
-                         ": it is the frame number, which seeds the photons and must not decrease (restart it "
-                         "with resetHistory); the frame-in-flight slot goes in FrameInputs::frameSlot");
     const uint32_t slot = in.frameSlot.value_or(in.frameIndex % m.settings.framesInFlight);
     if (slot >= m.settings.framesInFlight)
         return makeError("CausticsModule::addPasses: FrameInputs::frameSlot " + std::to_string(slot) +
@@ -202,9 +194,8 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
     }
     auto camera = makeCameraConstants(in.camera.view, proj, in.width, in.height, in.frameIndex, nullptr);
     if (!camera) return makeError("CausticsModule::addPasses: " + camera.message());
-    BeginPassInputs begin{in.camera.prevViewProj, in.camera.jitterPixels.has_value(), in.resetHistory};
+    BeginPassInputs begin{in.camera.prevViewProj, in.camera.jitterPixels.has_value(), in.resetHistory, in.frameIndex};
     std::shared_ptr<const CameraConstants> executedCamera = view.addBeginPass(graph, camera.value(), slot, begin);
-    view.lastBuiltFrame = in.frameIndex;
     CAUSTICS_TRY(LiveSceneFrame liveScene, m.liveScene->addUpdatePass(graph, *m.scene, slot, in.hostScene));
 
     FrameContext frame;

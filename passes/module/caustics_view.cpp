@@ -1,6 +1,9 @@
 #include "caustics_view.h"
 
 #include <cstring>
+#include <string>
+
+#include "caustics/rhi/log.h"
 
 namespace caustics {
 
@@ -51,6 +54,18 @@ std::shared_ptr<const CameraConstants> CausticsView::Impl::addBeginPass(rg::Rend
         rhi::BufferHandle buffer = cameraBuffers[slot];
         return [self, buffer, executed, inputs](rg::PassContext&) {
             CameraConstants& c = *executed;
+            // frameIndex seeds the photons: a host handing its frame-in-flight slot here repeats them every
+            // framesInFlight frames. Checked when frames execute (a graph built only to be compiled does
+            // not count); a restart of the count comes with a camera cut (resetHistory). The error is
+            // logged, and the render graph returns it from execute().
+            if (self->lastExecutedFrame && inputs.frameIndex < *self->lastExecutedFrame && !inputs.cameraCut)
+                log(LogLevel::Error, "CausticsModule: FrameInputs::frameIndex " + std::to_string(inputs.frameIndex) +
+                                         " is below the view's last executed frame " +
+                                         std::to_string(*self->lastExecutedFrame) +
+                                         ": it is the frame number, which seeds the photons and must not decrease "
+                                         "(restart it with resetHistory); the frame-in-flight slot goes in "
+                                         "FrameInputs::frameSlot");
+            self->lastExecutedFrame = inputs.frameIndex;
             const glm::uvec2 size(c.frame.x, c.frame.y);
             if (inputs.cameraCut) {
                 c.prevViewProj = c.viewProj;   // no previous frame: no motion

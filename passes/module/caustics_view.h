@@ -27,6 +27,7 @@ struct BeginPassInputs {
     std::optional<glm::mat4> hostPrevViewProj;   // CameraView::prevViewProj
     bool unjitteredPrev = false;                 // CameraView::jitterPixels set: the host's is unjittered
     bool cameraCut = false;
+    uint32_t frameIndex = 0;                     // FrameInputs::frameIndex
 };
 
 struct CausticsView::Impl {
@@ -36,7 +37,7 @@ struct CausticsView::Impl {
     std::vector<rhi::BindingSetHandle> cameraSets;
     std::optional<glm::mat4> lastViewProj;             // of the last executed frame (jittered)
     glm::vec2 lastJitterPixels{0.0f};                  // the jitter of the last executed frame
-    std::optional<uint32_t> lastBuiltFrame;            // FrameInputs::frameIndex of the last graph built
+    std::optional<uint32_t> lastExecutedFrame;         // FrameInputs::frameIndex of the last executed frame
     CausticViewHistory history;
 
     static Result<std::unique_ptr<Impl>> create(rhi::IDevice& device, const rhi::BindingLayoutHandle& cameraLayout,
@@ -49,7 +50,8 @@ struct CausticsView::Impl {
     // frame), writes it into slot `slot`'s buffer and into the returned
     // constants (what the caustic passes upload), and records this frame's view-projection as the view's
     // last one. Resolving the previous frame then, not when the graph is built, is what lets a host build
-    // frame n + 1 before it executes frame n.
+    // frame n + 1 before it executes frame n. A frame number below the last executed one (without a cut)
+    // is an execution error: frameIndex seeds the photons, and a slot index there repeats them.
     std::shared_ptr<const CameraConstants> addBeginPass(rg::RenderGraph& graph, const CameraConstants& camera,
                                                         uint32_t slot, const BeginPassInputs& inputs);
 };

@@ -125,6 +125,12 @@ struct CausticViewHistory {
     // the history, as after a cut). docs/embedding.md "Frames and views".
     uint32_t builtParity = 0;
     bool builtValid = false;
+    // A build that never executed (a graph built to be compiled only, then dropped) is undone when the
+    // next build is for the same or an earlier frame: the frame it built and the state before it, and
+    // the frame the last executed caustics.temporal belonged to.
+    std::optional<uint32_t> lastBuiltFrame, lastExecutedFrame;
+    uint32_t parityBeforeLastBuild = 0;
+    bool validBeforeLastBuild = false;
     // The CausticsView this history belongs to (0: CausticResources' own): per-view state of the
     // module (the sphere-count readbacks) is keyed by it, never by an address.
     uint64_t viewId = 0;
