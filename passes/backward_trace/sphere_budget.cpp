@@ -31,7 +31,7 @@ uint32_t grownSphereAllocation(uint32_t allocated, uint32_t wanted, uint32_t ini
 }
 
 void prepareSphereBudget(CausticFrame& f) {
-    std::vector<SphereCountReadback>& slots = f.res->sphereCounts[f.history];
+    std::vector<SphereCountReadback>& slots = f.res->sphereCounts[f.history->viewId];
     slots.resize(f.res->frameSets.size());
     SphereCountReadback& slot = slots[f.res->frameSlot];
     if (!slot.buffer) {

@@ -113,10 +113,10 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
 
 // caustics.temporal: last frame's history reprojected into this frame's (ping-pong, no copy).
 void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, FilterFrame& ff, rg::RgTexture raw,
-                     bool historyUsable) {
+                     bool historyUsable, uint32_t readCopy) {
     const GBuffer& g = f.in->gbuffer;
     CausticViewHistory& history = *f.history;
-    const uint32_t next = history.parity ^ 1u;
+    const uint32_t next = readCopy ^ 1u, frameIndex = f.in->frameIndex;
     graph.addPass("caustics.temporal", [&](rg::PassBuilder& b) {
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.normalRoughness), b.read(g.objectId),
@@ -131,10 +131,14 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         FilterTiles t = ff.tiles;
         rg::RgTexture gradient = ff.gradient;
         const float pre = ff.preExposure;
-        struct { uint32_t historyValid; float maxHistory, preExposure, historyScale; } push{
-            historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre,
-            pre / history.preExposure[history.parity]};
+        struct { uint32_t historyValid; float maxHistory, preExposure, historyScale; } built{
+            historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f};
         return [=](rg::PassContext& ctx) {
+            // Only if the last EXECUTED frame wrote the copy this one reads (a dropped graph breaks it),
+            // with the pre-exposure that frame stored it with.
+            auto push = built;
+            push.historyValid &= (fr.history->valid && fr.history->parity == readCopy) ? 1u : 0u;
+            push.historyScale = pre / fr.history->preExposure[readCopy];
             rhi::BindingSetDesc d = textureBindings(ctx, 1, {in[0], in[1], in[2], in[3], in[4], in[5], in[6]}, {});
             d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(fr.camera)))
                 .add(rhi::BindingSetItem::storageBuffer(8, ctx.buffer(t.list), false))
@@ -147,6 +151,7 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
                 fr.history->valid = true;
                 fr.history->preExposure[next] = pre;
                 fr.history->parity = next;
+                fr.history->lastExecutedFrame = frameIndex;
             }
         };
     });
@@ -164,9 +169,23 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
 
     const uint32_t w = f.width, h = f.height;
     const GBuffer& g = f.in->gbuffer;
-    // The view's history (caustic_passes.h): valid only after an executed frame of this view.
-    HistoryHandles hist = importHistory(graph, *f.history);
-    const bool historyUsable = f.history->valid && !f.in->resetHistory;
+    // The view's history (caustic_passes.h): valid only after an executed frame of this view. A
+    // previous build that never executed and is superseded (same or earlier frame) is undone first.
+    CausticViewHistory& vh = *f.history;
+    const uint32_t frameIndex = f.in->frameIndex;
+    if (vh.lastBuiltFrame && vh.lastBuiltFrame != vh.lastExecutedFrame && frameIndex <= *vh.lastBuiltFrame) {
+        vh.builtParity = vh.parityBeforeLastBuild;
+        vh.builtValid = vh.validBeforeLastBuild;
+    }
+    vh.parityBeforeLastBuild = vh.builtParity;
+    vh.validBeforeLastBuild = vh.builtValid;
+    vh.lastBuiltFrame = frameIndex;
+    HistoryHandles hist = importHistory(graph, vh);
+    const bool historyUsable = vh.builtValid && !f.in->resetHistory;
+    // The next graph built reads what this one writes (caustic_passes.h, CausticViewHistory::builtParity).
+    const uint32_t readCopy = vh.builtParity;
+    vh.builtParity ^= 1u;
+    vh.builtValid = true;
     // caustics.resolve's combined radiance: this frame's photons, zero in every tile the list leaves out;
     // the filter's last pass writes its result into it over the listed tiles.
     const rg::RgTexture raw = out.radiance;
@@ -175,7 +194,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     ff.poolTiles = f.history->poolTiles;
     ff.preExposure = filterPreExposure(f);
     out.filterTiles = ff.tiles.args;
-    addTemporalPass(graph, f, hist, ff, raw, historyUsable);
+    addTemporalPass(graph, f, hist, ff, raw, historyUsable, readCopy);
     const rg::RgTexture color = hist.color, guides = hist.guides;
 
     if (s.atrousIterations == 0) {

@@ -76,10 +76,12 @@ Status ensureFilterHistory(CausticResources::Impl& res, CausticViewHistory& h, u
         CAUSTICS_TRY(h.slots[i], make(tilesX, tilesY, rhi::Format::R32_UINT, "caustics.historySlots" + n));
     }
     h.poolTiles = pool;
-    h.parity = 0;
+    h.parity = h.builtParity = 0;
     h.width = width;
     h.height = height;
-    h.valid = false;
+    h.valid = h.builtValid = false;
+    h.lastBuiltFrame.reset();
+    h.lastExecutedFrame.reset();
     std::fill(h.tileCountRecorded.begin(), h.tileCountRecorded.end(), uint8_t(0));
     return okStatus();
 }

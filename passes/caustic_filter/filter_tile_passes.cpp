@@ -15,11 +15,11 @@ float filterPreExposure(const CausticFrame& f) {
 
 HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& history) {
     const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
-    const rhi::ResourceState now = history.valid ? ro : rhi::ResourceState::Undefined;
+    const rhi::ResourceState now = history.builtValid ? ro : rhi::ResourceState::Undefined;
     auto import = [&](const char* name, const rhi::TextureHandle (&t)[2], uint32_t i) {
         return graph.importTexture(std::string(name) + std::to_string(i), t[i], now, ro);
     };
-    const uint32_t previous = history.parity, next = history.parity ^ 1u;
+    const uint32_t previous = history.builtParity, next = history.builtParity ^ 1u;
     return {import("caustics.historyColor", history.color, previous),
             import("caustics.historyGuides", history.guides, previous),
             import("caustics.historyTiles", history.tiles, previous),

@@ -53,7 +53,7 @@ struct CausticResources::Impl {
     // when the frames that may still trace them have finished (as frameSets).
     std::vector<std::vector<rhi::AccelStructHandle>> retiredSphereTlas;
     // Sphere counts read back per view (keyed by its history) and frame slot (backward_trace/caustics/sphere_capacity.h).
-    std::map<const void*, std::vector<SphereCountReadback>> sphereCounts;
+    std::map<uint64_t, std::vector<SphereCountReadback>> sphereCounts;   // by CausticViewHistory::viewId
     CausticViewHistory ownHistory;   // used when CausticFrameInputs::history is null
     // Binding sets made while recording must outlive the GPU's use: kept for framesInFlight frames.
     std::vector<std::vector<rhi::BindingSetHandle>> frameSets;

@@ -44,11 +44,13 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
         const bool secondType = f.in->settings.secondType && !f.plan.maps.empty();
         if (secondType) f.backwardArgs = buffer("caustics.backwardArgs", 12, storage | rhi::BufferUsage::Indirect);
         const uint32_t backwardGrid[3] = {0u, 1u, 1u};
-        CameraConstants camera = f.in->camera;
+        CameraConstants built = f.in->camera;
+        std::shared_ptr<const CameraConstants> executed = f.in->executedCamera;
         std::vector<CausticMapGpu> maps = f.plan.maps;
         CausticFrame h = f;
         return [=](rg::PassContext& ctx) {
             rhi::ICommandList& cmd = ctx.cmd();
+            const CameraConstants& camera = executed ? *executed : built;   // the reprojection as executed
             cmd.writeBuffer(ctx.buffer(h.camera), &camera, sizeof(camera));
             if (!maps.empty()) cmd.writeBuffer(ctx.buffer(h.maps), maps.data(), maps.size() * sizeof(CausticMapGpu));
             else cmd.fillBuffer(ctx.buffer(h.maps), 0);
@@ -129,7 +131,11 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     const double specularCoverage = in.settings.secondType ? imageCoverageSum(view, bounds.instanceSpheres, bounds.instanceLo, bounds.instanceHi) : 0.0;
     CAUSTICS_CHECK(checkDeviceLimits(in, plan, specularCoverage));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
-    res->frameSlot = in.frameIndex % uint32_t(res->frameSets.size());
+    const uint32_t slot = in.frameSlot.value_or(in.frameIndex % uint32_t(res->frameSets.size()));
+    if (slot >= res->frameSets.size())
+        return makeError("addCausticPasses: frame slot " + std::to_string(slot) + " is not below framesInFlight " +
+                         std::to_string(res->frameSets.size()));
+    res->frameSlot = slot;
     res->frameSets[res->frameSlot].clear();
     res->retiredSphereTlas[res->frameSlot].clear();
     const uint32_t pixels = in.gbuffer.width * in.gbuffer.height;
@@ -217,6 +223,16 @@ std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, c
                                "\"Second-type cost\")");
     }
     return warnings;
+}
+
+Status prepareCausticPipelines(CausticResources& resources, const rhi::BindingLayoutHandle& sceneLayout) {
+    CausticResources::Impl* r = resources.impl();
+    if (!r) return makeError("prepareCausticPipelines: CausticResources were not created");
+    return r->ensureScenePipelines(sceneLayout);
+}
+
+void releaseCausticView(CausticResources& resources, uint64_t viewId) {
+    if (CausticResources::Impl* r = resources.impl()) r->sphereCounts.erase(viewId);
 }
 
 }  // namespace caustics

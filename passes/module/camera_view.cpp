@@ -83,4 +83,11 @@ CameraView cameraViewMatrices(const scene::Camera& camera, uint32_t width, uint3
     return v;
 }
 
+glm::mat4 jitterClipMatrix(const glm::mat4& clipMatrix, glm::vec2 jitterPixels, uint32_t width, uint32_t height) {
+    glm::mat4 shift(1.0f);
+    shift[3][0] = 2.0f * jitterPixels.x / float(std::max(width, 1u));
+    shift[3][1] = 2.0f * jitterPixels.y / float(std::max(height, 1u));
+    return shift * clipMatrix;
+}
+
 }  // namespace caustics

@@ -22,6 +22,7 @@ struct CausticsModule::Impl {
     CausticsSettings settings;
     std::optional<LiveScene> liveScene;
     rhi::BindingLayoutHandle cameraLayout;
+    std::shared_ptr<ViewRegistry> views = std::make_shared<ViewRegistry>();
     std::unique_ptr<CausticsView> defaultView;
     std::optional<GBufferPass> gbuffer;
     std::optional<ObjectIdRemapPass> objectIdRemap;
@@ -57,15 +58,31 @@ Result<std::unique_ptr<CausticsModule>> CausticsModule::create(rhi::DeviceHandle
     const rhi::BindingLayoutHandle& sceneLayout = impl->liveScene->layout();
     CAUSTICS_TRY(impl->gbuffer, GBufferPass::create(dev, sceneLayout, impl->cameraLayout));
     CAUSTICS_TRY(impl->objectIdRemap, ObjectIdRemapPass::create(dev));
-    CAUSTICS_TRY(impl->direct, DirectLightingPass::create(dev, sceneLayout, impl->cameraLayout));
-    CAUSTICS_TRY(impl->composite, CompositePass::create(dev));
     auto module = std::unique_ptr<CausticsModule>(new CausticsModule(std::move(impl)));
     CAUSTICS_TRY(module->impl_->defaultView, module->createView());
+    CAUSTICS_CHECK(module->prepare());
     return module;
 }
 
+Status CausticsModule::prepare() {
+    Impl& m = *impl_;
+    // Shader tables upload, and the sphere BLAS is built, on the host's queue (docs/embedding.md
+    // "Threading"): here, never in addPasses.
+    if (!m.settings.causticsOnly && !m.direct) {
+        CAUSTICS_TRY(m.direct, DirectLightingPass::create(*m.device, m.liveScene->layout(), m.cameraLayout));
+        CAUSTICS_TRY(m.composite, CompositePass::create(*m.device));
+    }
+    if (m.settings.causticsEnabled && !m.causticsReady) {
+        CAUSTICS_TRY(m.caustics, CausticResources::create(*m.device, m.settings.framesInFlight));
+        CAUSTICS_CHECK(prepareCausticPipelines(m.caustics, m.liveScene->layout()));
+        m.causticsReady = true;
+    }
+    return okStatus();
+}
+
 Result<std::unique_ptr<CausticsView>> CausticsModule::createView() {
-    CAUSTICS_TRY(auto view, CausticsView::Impl::create(*impl_->device, impl_->cameraLayout, impl_->settings.framesInFlight));
+    CAUSTICS_TRY(auto view, CausticsView::Impl::create(*impl_->device, impl_->cameraLayout,
+                                                        impl_->settings.framesInFlight, impl_->views));
     return std::unique_ptr<CausticsView>(new CausticsView(std::move(view)));
 }
 
@@ -112,10 +129,29 @@ Status CausticsModule::setSettings(const CausticsSettings& settings) {
         return makeError("CausticsModule::setSettings: framesInFlight is fixed at create() (" +
                          std::to_string(impl_->settings.framesInFlight) + "); create a new module to change it");
     impl_->settings = settings;
-    return okStatus();
+    return prepare();
 }
 
 namespace {
+void releaseDestroyedViews(CausticsModule::Impl& m) {
+    std::vector<uint64_t> destroyed;
+    {
+        std::lock_guard lock(m.views->mutex);
+        destroyed.swap(m.views->destroyed);
+    }
+    for (uint64_t id : destroyed)
+        if (m.causticsReady) releaseCausticView(m.caustics, id);
+}
+
+// The host must read (or mark) one of the frame's images, else the graph culls every pass of the
+// module without a word (docs/embedding.md "No silent failure").
+void expectSomeOutputRead(rg::RenderGraph& graph, const FrameOutputs& out) {
+    const GBuffer& g = out.gbuffer;
+    graph.expectConsumer({out.display, out.hdr, out.direct, out.caustics, out.firstType, out.secondType, g.linearDepth,
+                          g.objectId, g.normalRoughness, g.albedoMetallic, g.optics, g.depth},
+                         "CausticsModule::addPasses (FrameOutputs)");
+}
+
 CompositeAov compositeAov(CausticsAov aov) {
     switch (aov) {
         case CausticsAov::Final: return CompositeAov::Final;
@@ -139,13 +175,27 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
                          std::to_string(in.height) + " is outside [1, 16384]");
     if (m.settings.causticsOnly && !in.hostGBuffer)
         return makeError("CausticsModule::addPasses: settings.causticsOnly needs FrameInputs::hostGBuffer");
+    if ((m.settings.causticsEnabled && !m.causticsReady) || (!m.settings.causticsOnly && !m.direct))
+        return makeError("CausticsModule::addPasses: the settings need pipelines the module has not made (a "
+                         "failed prepare()): call prepare() (it records and submits on the host's queue)");
     CausticsView::Impl& view = in.view ? in.view->impl() : m.defaultView->impl();
-    const std::optional<glm::mat4> prev = view.previousViewProj(in.camera, in.resetHistory);
-    auto camera = makeCameraConstants(in.camera.view, in.camera.proj, in.width, in.height, in.frameIndex,
-                                      prev ? &*prev : nullptr);
+    const uint32_t slot = in.frameSlot.value_or(in.frameIndex % m.settings.framesInFlight);
+    if (slot >= m.settings.framesInFlight)
+        return makeError("CausticsModule::addPasses: FrameInputs::frameSlot " + std::to_string(slot) +
+                         " is not below settings.framesInFlight " + std::to_string(m.settings.framesInFlight));
+    releaseDestroyedViews(m);
+    // The previous view-projection is completed when the graph executes (view.begin).
+    glm::mat4 proj = in.camera.proj;
+    if (in.camera.jitterPixels) {
+        if (proj[2][0] != 0.0f || proj[2][1] != 0.0f)
+            return makeError("CausticsModule::addPasses: CameraView::jitterPixels is set and proj[2][0], proj[2][1] "
+                             "carry a jitter too: give an unjittered proj with jitterPixels, or neither");
+        proj = jitterClipMatrix(proj, *in.camera.jitterPixels, in.width, in.height);
+    }
+    auto camera = makeCameraConstants(in.camera.view, proj, in.width, in.height, in.frameIndex, nullptr);
     if (!camera) return makeError("CausticsModule::addPasses: " + camera.message());
-    const uint32_t slot = in.frameIndex % m.settings.framesInFlight;
-    view.addBeginPass(graph, camera.value(), slot);
+    BeginPassInputs begin{in.camera.prevViewProj, in.camera.jitterPixels.has_value(), in.resetHistory, in.frameIndex};
+    std::shared_ptr<const CameraConstants> executedCamera = view.addBeginPass(graph, camera.value(), slot, begin);
     CAUSTICS_TRY(LiveSceneFrame liveScene, m.liveScene->addUpdatePass(graph, *m.scene, slot, in.hostScene));
 
     FrameContext frame;
@@ -174,10 +224,6 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
 
     // Caustics: skipped when switched off or when there is no light (nothing can form them).
     if (m.settings.causticsEnabled && !m.scene->lights.empty()) {
-        if (!m.causticsReady) {
-            CAUSTICS_TRY(m.caustics, CausticResources::create(*m.device, m.settings.framesInFlight));
-            m.causticsReady = true;
-        }
         CausticFrameInputs ci;
         ci.device = m.device.get();
         ci.scene = m.scene;
@@ -188,6 +234,8 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         ci.camera = frame.camera;
         ci.settings = m.settings;
         ci.frameIndex = in.frameIndex;
+        ci.frameSlot = slot;
+        ci.executedCamera = executedCamera;
         ci.resetHistory = in.resetHistory;
         ci.history = &view.history;
         if (m.settings.causticTimeTargetMs > 0.0f) {
@@ -212,7 +260,11 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         out.secondType = co.secondType;
         out.causticStats = co.stats;
     }
-    if (m.settings.causticsOnly) return out;
+    if (m.settings.causticsOnly) {
+        // The host composites: it must read (or mark) the caustics, else the graph culls every pass.
+        expectSomeOutputRead(graph, out);
+        return out;
+    }
 
     CompositeParams params;
     params.aov = compositeAov(m.settings.aov);
@@ -232,6 +284,8 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
     CompositeOutputs co = m.composite->addToGraph(graph, out.gbuffer, out.direct, shownCaustics, params);
     out.display = co.display;
     out.hdr = co.hdr;
+    // Reading none of its images (or the host's outputTarget) culls the whole module without a word.
+    if (!in.outputTarget) expectSomeOutputRead(graph, out);
     return out;
 }
 

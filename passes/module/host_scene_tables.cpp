@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "caustics/host_scene.h"
@@ -22,6 +24,45 @@ Status checkRows(const rhi::BufferHandle& b, const char* field, uint64_t rowByte
                      what + " (docs/embedding.md, \"Host scene tables\")");
 }
 
+// The host's instance rows against the CPU scene: what the module plans with (map frusta from the
+// scene's bounds, lights) must be what the hit shaders and the host's TLAS see.
+Status checkInstanceRows(const HostSceneTables& t, const scene::Scene& scene) {
+    if (!t.tlas && !t.instances) return okStatus();
+    const std::string ref = " (docs/embedding.md, \"Host scene tables\")";
+    if (t.instanceRows.size() != scene.instances.size())
+        return makeError("HostSceneTables::instanceRows holds " + std::to_string(t.instanceRows.size()) +
+                         " rows; the scene has " + std::to_string(scene.instances.size()) +
+                         " instances: a host TLAS or instance table comes with the host's CPU copy of its rows" + ref);
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const scene::Instance& inst = scene.instances[i];
+        if (inst.mesh >= scene.meshes.size()) continue;   // refused, naming the mesh, by the scene update
+        const scene::GpuInstance expected = scene::toGpuInstance(scene, inst, 0, 0);
+        const scene::GpuInstance& row = t.instanceRows[i];
+        const std::string who = "scene instance " + std::to_string(i) + " (mesh '" +
+                                (inst.mesh < scene.meshes.size() ? scene.meshes[inst.mesh].name : std::string("?")) +
+                                "') and host instance row " + std::to_string(i);
+        float largest = 1.0f, worst = 0.0f;
+        int worstColumn = 0, worstRow = 0;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) {
+                largest = std::max(largest, std::abs(expected.objectToWorld[c][r]));
+                const float d = std::abs(row.objectToWorld[c][r] - expected.objectToWorld[c][r]);
+                if (!(d <= worst)) { worst = d; worstColumn = c; worstRow = r; }
+            }
+        if (!(worst <= kHostInstanceTransformTolerance * largest))
+            return makeError(who + " differ in objectToWorld[" + std::to_string(worstColumn) + "][" +
+                             std::to_string(worstRow) + "] (" + std::to_string(expected.objectToWorld[worstColumn][worstRow]) +
+                             " vs " + std::to_string(row.objectToWorld[worstColumn][worstRow]) +
+                             "): move scene::Scene's instance with the host's TLAS" + ref);
+        if (row.material != expected.material)
+            return makeError(who + " differ in material (" + std::to_string(expected.material) + " vs " +
+                             std::to_string(row.material) + ")" + ref);
+        if ((row.flags & scene::kInstanceSpecular) != (expected.flags & scene::kInstanceSpecular))
+            return makeError(who + " differ in the specular flag (the caustic maps plan from the scene's)" + ref);
+    }
+    return okStatus();
+}
+
 }  // namespace
 
 Status checkHostSceneTables(const HostSceneTables& t, const scene::Scene& scene) {
@@ -39,8 +80,9 @@ Status checkHostSceneTables(const HostSceneTables& t, const scene::Scene& scene)
                          "firstVertex and firstIndex index all three); " + std::to_string(geometryGiven) + " of 3 given");
     CAUSTICS_CHECK(checkRows(t.instances, "instances", sizeof(scene::GpuInstance), "GpuInstance", scene.instances.size(),
                              "instances"));
-    return checkRows(t.materials, "materials", sizeof(scene::GpuMaterial), "GpuMaterial", scene.materials.size(),
-                     "materials");
+    CAUSTICS_CHECK(checkRows(t.materials, "materials", sizeof(scene::GpuMaterial), "GpuMaterial", scene.materials.size(),
+                             "materials"));
+    return checkInstanceRows(t, scene);
 }
 
 }  // namespace caustics

@@ -1,4 +1,5 @@
 #include "caustics/rhi/log.h"
+#include "caustics/rhi/log_capture.h"
 
 #include <cstdio>
 #include <mutex>
@@ -22,7 +23,16 @@ const char* levelName(LogLevel level) {
     }
     return "?";
 }
+thread_local LogErrorCapture* innermostCapture = nullptr;
 }  // namespace
+
+LogErrorCapture::LogErrorCapture() : outer_(innermostCapture) { innermostCapture = this; }
+LogErrorCapture::~LogErrorCapture() { innermostCapture = outer_; }
+
+void LogErrorCapture::noteError(const std::string& message) {
+    for (LogErrorCapture* c = innermostCapture; c; c = c->outer_)
+        if (c->firstError_.empty()) c->firstError_ = message;
+}
 
 void setLogCallback(LogCallback callback) {
     std::lock_guard lock(logMutex());
@@ -30,6 +40,7 @@ void setLogCallback(LogCallback callback) {
 }
 
 void log(LogLevel level, std::string_view message) {
+    if (level == LogLevel::Error && innermostCapture) LogErrorCapture::noteError(std::string(message));
     LogCallback sink;
     {
         std::lock_guard lock(logMutex());

@@ -60,6 +60,25 @@ public:
 
     // A host's list (d3d12_interop_command_list.cpp) has no allocator: the host resets and closes it.
     bool timestampsAllowed = true;
+    // A host's list: the heaps it had set (D3D12CommandListImport::hostDescriptorHeaps), restored at
+    // every outermost endMarker (the end of a graph pass); ours are set again at the next beginMarker.
+    ID3D12DescriptorHeap* hostHeaps[2] = {nullptr, nullptr};
+    uint32_t markerDepth = 0;
+
+    void setModuleHeaps() {
+        ID3D12DescriptorHeap* heaps[] = {resourceRing->heap(), samplerRing->heap()};
+        list->SetDescriptorHeaps(2, heaps);
+        // A new heap invalidates the bound descriptor tables: bind root and tables again.
+        root = nullptr;
+        graphics = nullptr;
+    }
+    void restoreHostHeaps() {
+        ID3D12DescriptorHeap* heaps[2];
+        UINT count = 0;
+        for (ID3D12DescriptorHeap* h : hostHeaps)
+            if (h) heaps[count++] = h;
+        if (count) list->SetDescriptorHeaps(count, heaps);
+    }
 
     void begin() override {
         if (allocator) {
@@ -76,8 +95,8 @@ public:
         vertexBuffers = {};
         vertexBufferSlots = 0;
         firstError = okStatus();
-        ID3D12DescriptorHeap* heaps[] = {resourceRing->heap(), samplerRing->heap()};
-        list->SetDescriptorHeaps(2, heaps);
+        markerDepth = 0;
+        setModuleHeaps();
     }
     void end() override {
         if (allocator) list->Close();
@@ -300,8 +319,12 @@ public:
     void beginMarker(std::string_view name) override {
         const std::u16string payload = markerPayload(name);
         list->BeginEvent(kMarkerMetadataUnicode, payload.data(), UINT(payload.size() * sizeof(char16_t)));
+        if (!allocator && markerDepth++ == 0) setModuleHeaps();
     }
-    void endMarker() override { list->EndEvent(); }
+    void endMarker() override {
+        list->EndEvent();
+        if (!allocator && markerDepth > 0 && --markerDepth == 0) restoreHostHeaps();
+    }
     NativeObject getNativeObject(NativeObjectType type) const override {
         return type == NativeObjectType::D3D12GraphicsCommandList ? NativeObject::from(list.get()) : NativeObject();
     }

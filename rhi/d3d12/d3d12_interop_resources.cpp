@@ -94,7 +94,10 @@ Result<CommandListHandle> wrapD3D12CommandList(IDevice& device, const D3D12Comma
     list->list = d3d12::holdReference(desc.commandList);
     list->timestampsAllowed = desc.allowTimestamps;
     CAUSTICS_CHECK(list->createDescriptorStorage(dev->d3d()));
+    list->hostHeaps[0] = desc.hostDescriptorHeaps[0];
+    list->hostHeaps[1] = desc.hostDescriptorHeaps[1];
     list->begin();   // no allocator: resets our rings and sets our shader-visible heaps on the host's list
+    list->restoreHostHeaps();   // ours again at each pass (beginMarker)
     return CommandListHandle(list);
 }
 

@@ -1,6 +1,8 @@
 // VulkanDevice: creation, object factories and memory placement.
 #include "vk_device.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "vk_binding.h"
@@ -65,13 +67,24 @@ Result<HeapHandle> VulkanDevice::createHeap(const HeapDesc& desc) {
     return HeapHandle(h.value());
 }
 
+namespace {
+// What a virtual resource needs of a heap that also holds resources of the other tiling (the render
+// graph aliases buffers and optimal images in one heap): start and end on bufferImageGranularity
+// pages, so that no linear and optimal resource share one (Vulkan spec 12.7 "Resource Memory
+// Association"). The device's own limit, not a guess: 1 on many desktop GPUs, 64 on lavapipe.
+MemoryRequirements placedRequirements(const VkMemoryRequirements& r, const VulkanContext& context) {
+    const uint64_t page = std::max<uint64_t>(1, context.properties.limits.bufferImageGranularity);
+    const uint64_t alignment = std::max<uint64_t>(r.alignment, page);
+    return {(r.size + page - 1) / page * page, alignment};
+}
+}  // namespace
+
 MemoryRequirements VulkanDevice::memoryRequirements(const TextureDesc& desc) {
     TextureDesc probe = desc;
     probe.isVirtual = true;
     auto t = VulkanTexture::create(context_, probe);
     if (!t) return {};
-    VkMemoryRequirements r = t.value()->requirements();
-    return {r.size, r.alignment};
+    return placedRequirements(t.value()->requirements(), *context_);
 }
 
 MemoryRequirements VulkanDevice::memoryRequirements(const BufferDesc& desc) {
@@ -79,8 +92,7 @@ MemoryRequirements VulkanDevice::memoryRequirements(const BufferDesc& desc) {
     probe.isVirtual = true;
     auto b = VulkanBuffer::create(context_, probe);
     if (!b) return {};
-    VkMemoryRequirements r = b.value()->requirements();
-    return {r.size, r.alignment};
+    return placedRequirements(b.value()->requirements(), *context_);
 }
 
 namespace {

@@ -30,6 +30,7 @@ Status BenchFrames::render(const scene::Camera& camera, uint32_t frameIndex, boo
     in.width = width_;
     in.height = height_;
     in.frameIndex = frameIndex;
+    in.resetHistory = frameIndex == 0;   // a new measurement restarts the frame count (docs/embedding.md)
     CAUSTICS_TRY(FrameOutputs out, module_->addPasses(graph_, in));
     graph_.markOutput(out.display);
     const bool caustics = readCaustics && out.caustics.valid();

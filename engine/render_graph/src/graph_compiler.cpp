@@ -10,8 +10,6 @@
 namespace caustics::rg {
 namespace {
 
-constexpr uint64_t kPlacementGranularity = 1024;
-
 std::string describe(const GraphDesc& g, uint32_t pass, uint32_t resource) {
     return "pass '" + g.passes[pass].name + "', " + resourceKindName(g.resources[resource].kind) + " '" +
            g.resources[resource].name + "'";
@@ -87,6 +85,38 @@ std::vector<bool> cull(const GraphDesc& g) {
     return kept;
 }
 
+// What a library handed to the host (GraphDesc::expectedConsumers) must reach it: one of each group
+// is consumed when the producer of its latest version is kept (the host reads it, or another output
+// of that pass) or a kept pass reads it. Otherwise culling drops its producers silently.
+bool consumed(const GraphDesc& g, const std::vector<bool>& kept, uint32_t r) {
+    const ResourceDecl& res = g.resources[r];
+    if (res.output) return true;
+    for (uint32_t p = 0; p < g.passes.size(); ++p) {
+        if (!kept[p]) continue;
+        for (const AccessDecl& a : g.passes[p].accesses)
+            if (a.resource == r && (a.version == res.latestVersion || (a.write && a.version - 1 == res.latestVersion)))
+                return true;
+    }
+    return false;
+}
+
+Status checkExpectedConsumers(const GraphDesc& g, const std::vector<bool>& kept) {
+    for (const ExpectedConsumer& e : g.expectedConsumers) {
+        bool any = false;
+        std::string names;
+        for (uint32_t r : e.anyOf) {
+            if (r >= g.resources.size()) continue;
+            any = any || consumed(g, kept, r);
+            names += (names.empty() ? "'" : ", '") + g.resources[r].name + "'";
+        }
+        if (!any)
+            return makeError("render graph: none of " + names + " from " + e.owner +
+                             " is read by a pass or marked as an output, so the graph would cull every pass that "
+                             "makes them: call graph.markOutput(...) on the one you use or read it in a pass");
+    }
+    return okStatus();
+}
+
 void addDependencies(const GraphDesc& g, const std::vector<std::vector<uint32_t>>& producers, CompiledPlan& plan) {
     std::set<std::tuple<uint32_t, uint32_t, uint32_t, uint32_t>> seen;
     for (const PlannedPass& pp : plan.order) {
@@ -110,6 +140,7 @@ Result<CompiledPlan> compileGraph(const GraphDesc& g, const IMemorySizer& sizer)
 
     CompiledPlan plan;
     plan.passKept = cull(g);
+    CAUSTICS_CHECK(checkExpectedConsumers(g, plan.passKept));
     // Declaration order is a valid topological order (a pass can only read versions that earlier
     // passes wrote), and keeps the host's intended order as the tie-break.
     for (uint32_t p = 0; p < g.passes.size(); ++p)
@@ -154,11 +185,9 @@ Result<CompiledPlan> compileGraph(const GraphDesc& g, const IMemorySizer& sizer)
             plan.bufferDescs[r].isVirtual = true;
             plan.memory[r] = sizer.requirements(plan.bufferDescs[r]);
         }
-        // Every placement starts on a kPlacementGranularity boundary, so two byte-disjoint resources
-        // never share a bufferImageGranularity page (Vulkan spec 11.7 "Resource Memory Association":
-        // linear and optimal resources alive together must not share a page; the limit is at most
-        // 1024 bytes on the hardware we target, 64 on lavapipe).
-        uint64_t alignment = std::max<uint64_t>(plan.memory[r].alignment, kPlacementGranularity);
+        // The device's requirements already keep a buffer and an image off each other's
+        // bufferImageGranularity page (the Vulkan backend pads them to it: rhi/vulkan/vk_device.cpp).
+        uint64_t alignment = std::max<uint64_t>(plan.memory[r].alignment, 1);
         requests.push_back({plan.memory[r].size, alignment, life});
         requestResource.push_back(r);
     }

@@ -5,6 +5,7 @@
 
 #include "execution_state.h"
 #include "caustics/rhi/log.h"
+#include "caustics/rhi/log_capture.h"
 
 namespace caustics::rg {
 
@@ -173,9 +174,13 @@ Status RenderGraph::execute(rhi::IDevice& device, rhi::ICommandList& cmd) {
         cmd.beginMarker(name);
         if (timed) cmd.writeTimestamp(ex.timestampPool, base + 2 * i);
         if (executes_[planned.pass]) {
+            // An error the pass (or the RHI under it) only logs still fails execute(): a pass that
+            // skipped its work must not leave the host with an ok and a black image.
+            LogErrorCapture logged;
             PassContext ctx(&device, cmd, desc_, planned.pass, ex.physical);
             executes_[planned.pass](ctx);
-            if (ctx.failed() && firstError.empty()) firstError = ctx.error();
+            if (firstError.empty() && (ctx.failed() || logged.failed()))
+                firstError = ctx.failed() ? ctx.error() : "render graph: pass '" + name + "': " + logged.firstError();
         }
         if (timed) cmd.writeTimestamp(ex.timestampPool, base + 2 * i + 1);
         cmd.endMarker();

@@ -114,6 +114,17 @@ void RenderGraph::markOutput(RgAccelStruct as) {
     plan_.reset();
 }
 
+void RenderGraph::expectConsumer(std::initializer_list<RgTexture> anyOf, std::string owner) {
+    ExpectedConsumer expected{std::move(owner), {}};
+    for (RgTexture t : anyOf)
+        if (t.valid()) {
+            if (t.index >= desc_.resources.size()) return setupError("render graph: expectConsumer got an invalid texture");
+            expected.anyOf.push_back(t.index);
+        }
+    if (!expected.anyOf.empty()) desc_.expectedConsumers.push_back(std::move(expected));
+    plan_.reset();
+}
+
 Status RenderGraph::compile(const IMemorySizer& sizer) {
     if (!setupError_.empty()) return makeError(setupError_);
     auto plan = compileGraph(desc_, sizer);

@@ -22,7 +22,17 @@ struct CameraView {
     // Last frame's view-projection for the filter's reprojection. Unset: the module uses this view's
     // own record of the previous executed frame (CausticsViewState).
     std::optional<glm::mat4> prevViewProj;
+    // Sub-pixel jitter (TAA) given apart from the matrices, as most engines keep it: `proj` and
+    // `prevViewProj` are then UNjittered, the module jitters proj by this and prevViewProj by the
+    // jitter of the view's last executed frame. Unset: proj carries the jitter (proj[2][0], [2][1]) and
+    // prevViewProj must carry last frame's. Pixels, x right, y down (ProjectionOptions::jitterPixels).
+    std::optional<glm::vec2> jitterPixels;
 };
+
+// `clipMatrix` (a projection or a view-projection) with its image shifted by `jitterPixels`: the
+// clip-space translation x += 2 jx / width * w, y += 2 jy / height * w (the convention analyzeProjection
+// reads back from proj[2][0], proj[2][1]).
+glm::mat4 jitterClipMatrix(const glm::mat4& clipMatrix, glm::vec2 jitterPixels, uint32_t width, uint32_t height);
 
 // What the passes need to know about a projection, read back from its matrix.
 struct ProjectionInfo {

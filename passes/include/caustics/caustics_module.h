@@ -6,7 +6,7 @@
 //   graph.reset();
 //   FrameInputs in{.camera = cameraViewMatrices(cam, w, h), .width = w, .height = h, .frameIndex = n};
 //   auto out = (*module)->addPasses(graph, in);      // scene update, G-buffer, direct, caustics, composite
-//   graph.markOutput(out->display);
+//   graph.markOutput(out->display);                  // or read it in a pass: else compile() fails naming it
 //   graph.execute(*device, *cmd);  ...submit...; graph.texture(out->display) is the image
 //   graph.passTimeMs("direct_lighting")           // per-pass GPU medians come from the graph
 //
@@ -52,7 +52,13 @@ struct FrameInputs {
     CameraView camera;                         // host matrices (camera_view.h): jitter, reversed Z, infinite far
     uint32_t width = 0;
     uint32_t height = 0;
-    uint32_t frameIndex = 0;                   // selects the frame-in-flight slot: frameIndex % framesInFlight
+    // The frame number, counted up by one per frame (never down: addPasses refuses a smaller one than the
+    // view's last). It seeds the photons, so it must not be the frame-in-flight slot: a slot index
+    // repeats the same photons every framesInFlight frames.
+    uint32_t frameIndex = 0;
+    // The frame-in-flight slot whose per-frame buffers this frame uses (< settings.framesInFlight): the
+    // host's own slot index. Unset: frameIndex % framesInFlight.
+    std::optional<uint32_t> frameSlot;
     bool resetHistory = false;                 // camera cut of THIS view: its filter forgets the past
     CausticsView* view = nullptr;              // null: the module's default view
     std::optional<HostGBuffer> hostGBuffer;    // imported instead of running our G-buffer pass
@@ -83,6 +89,10 @@ public:
     // renders black direct light and no caustics. settings.framesInFlight is fixed from here on: frame
     // n reuses the per-frame buffers of frame n - framesInFlight, so the host must have waited for
     // that frame before executing frame n's graph.
+    //
+    // Threading (docs/embedding.md "Threading"): create() and prepare() record and submit on the host's
+    // queue (the thread that owns it); addPasses() only declares passes and may run on any one thread
+    // at a time; the render graph's execute() records into the host's command list and never submits.
     static Result<std::unique_ptr<CausticsModule>> create(rhi::DeviceHandle device, const scene::Scene& scene,
                                                           const scene::GpuScene& gpuScene,
                                                           const CausticsSettings& settings = {});
@@ -101,8 +111,15 @@ public:
     // history grow with the output size). Views made by createView() add memoryReport(view) each.
     std::vector<MemoryEntry> memoryReport() const;
     std::vector<MemoryEntry> memoryReport(const CausticsView& view) const;
-    // Validated like create(); takes effect at the next addPasses. framesInFlight cannot change.
+    // Validated like create(); takes effect at the next addPasses. framesInFlight cannot change. Calls
+    // prepare(): settings that switch something on (caustics, causticsOnly off) record and submit on
+    // the host's queue here, with prepare()'s thread rule.
     Status setSettings(const CausticsSettings& settings);
+    // Makes what the current settings need: ray-tracing pipelines and their shader tables (uploaded),
+    // the second type's sphere BLAS (built). Records and submits on the host's queue and waits for it:
+    // call it from the thread that owns that queue, when no other thread uses it. create() and
+    // setSettings() call it; it does nothing when all is made.
+    Status prepare();
 
     struct Impl;
 

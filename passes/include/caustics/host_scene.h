@@ -14,11 +14,17 @@
 //
 // The CPU scene (scene::Scene) still tells the module the lights, the specular objects' world bounds
 // (caustic map frusta) and, for its own G-buffer and map rasterization, each instance's mesh; it must
-// describe the same instances in the same order as these tables.
+// describe the same instances in the same order as these tables. With a host TLAS or instance table
+// the host also hands in `instanceRows`, its CPU copy of this frame's instance rows, and every
+// addPasses checks the scene against it, naming the first instance that differs: a host that moves
+// its TLAS but not scene::Scene gets an error, not a dimmed caustic.
+#include <span>
+
 #include "caustics/rhi/accel_struct.h"
 #include "caustics/rhi/resource_state.h"
 #include "caustics/rhi/resources.h"
 #include "caustics/rhi/result.h"
+#include "caustics/scene/gpu_types.h"
 #include "caustics/scene/scene.h"
 
 namespace caustics {
@@ -28,13 +34,22 @@ struct HostSceneTables {
     // The state the host leaves its TLAS in before the graph and wants it in after (built and readable).
     rhi::ResourceState tlasState = rhi::ResourceState::AccelStructRead;
     rhi::BufferHandle positions, vertices, indices, materials, instances;
+    // Required with `tlas` or `instances`: what the host wrote into its instance table (and placed in its
+    // TLAS) for this frame, one GpuInstance per scene instance. Read during addPasses only.
+    std::span<const scene::GpuInstance> instanceRows;
 };
+
+// How far a host row's objectToWorld may be from the scene's (largest absolute entry difference,
+// relative to the matrix's largest entry): float rounding of the same transform stays far below it.
+inline constexpr float kHostInstanceTransformTolerance = 1e-4f;
 
 // ok, or an error naming the first table the module cannot bind for `scene`: a TLAS that is not top
 // level, a buffer without Storage usage, geometry tables not given as a set (positions, vertices and
 // indices: the instance rows index all three), or an instance or material table with fewer rows than
-// the scene has instances or materials (the hit shaders would read past its end). Device-free; the
-// module calls it at every addPasses.
+// the scene has instances or materials (the hit shaders would read past its end), and, with a host
+// TLAS or instance table, missing `instanceRows` or a row whose transform, material or specular flag is
+// not the scene instance's (naming the instance, its row and the entry). Device-free; the module calls
+// it at every addPasses.
 Status checkHostSceneTables(const HostSceneTables& tables, const scene::Scene& scene);
 
 }  // namespace caustics

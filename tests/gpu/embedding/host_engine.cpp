@@ -91,6 +91,7 @@ Result<HostSceneTables> importHostScene(rhi::IDevice& device, const HostRayTraci
         {&t.positions, {&rt.positions, rt.positionBytes}}, {&t.vertices, {&rt.vertices, rt.vertexBytes}},
         {&t.indices, {&rt.indices, rt.indexBytes}},       {&t.materials, {&rt.materials, rt.materialBytes}},
         {&t.instances, {&rt.instances, rt.instanceBytes}}};
+    t.instanceRows = rt.instanceRows;
     const char* names[] = {"host positions", "host vertices", "host indices", "host materials", "host instances"};
     for (size_t i = 0; i < std::size(tables); ++i) {
         const auto& [handle, raw] = tables[i];

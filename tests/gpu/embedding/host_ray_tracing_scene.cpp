@@ -46,6 +46,7 @@ bool HostRayTracingScene::create(RawVulkanHost& host, const scene::Scene& scene,
     indices = uploadTable(host, packed.indices, packed.indices.size(), indexBytes);
     materials = uploadTable(host, packed.materials, packed.materials.size(), materialBytes);
     instances = uploadTable(host, packed.instances, std::min(instanceRows, packed.instances.size()), instanceBytes);
+    this->instanceRows.assign(packed.instances.begin(), packed.instances.begin() + std::min(instanceRows, packed.instances.size()));
     if (!positions.mapped || !vertices.mapped || !indices.mapped || !materials.mapped || !instances.mapped) return false;
 
     blases_.resize(scene.meshes.size());

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "caustics/scene/gpu_types.h"
 #include "caustics/scene/scene.h"
 #include "raw_vulkan_host.h"
 
@@ -31,6 +32,9 @@ public:
     RawBuffer positions, vertices, indices, materials, instances;
     VkDeviceSize positionBytes = 0, vertexBytes = 0, indexBytes = 0, materialBytes = 0, instanceBytes = 0;
     VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
+    // The host's CPU copy of what it wrote into `instances` (and placed in its TLAS): handed to the module
+    // as HostSceneTables::instanceRows, which checks the CPU scene against it every frame.
+    std::vector<scene::GpuInstance> instanceRows;
 
 private:
     struct AccelStruct {

@@ -20,7 +20,7 @@ ViewRequest viewOf(const scene::Camera& camera, uint32_t size, ModuleOutput outp
 
 Result<std::vector<std::vector<FrameImage>>> runModuleFrames(
     rhi::IDevice& device, CausticsModule& module, uint32_t frames, uint32_t framesInFlight,
-    const std::function<std::vector<ViewRequest>(uint32_t frame)>& frameViews) {
+    const std::function<std::vector<ViewRequest>(uint32_t frame)>& frameViews, FrameOrder order) {
     std::vector<std::unique_ptr<rg::RenderGraph>> graphs;
     std::vector<rhi::CommandListHandle> lists;
     std::vector<uint64_t> fences(framesInFlight, 0);
@@ -34,10 +34,12 @@ Result<std::vector<std::vector<FrameImage>>> runModuleFrames(
         uint32_t width = 0, height = 0;
     };
     std::vector<std::vector<Pending>> pending(frames);
-    for (uint32_t n = 0; n < frames; ++n) {
+    // Builds frame n's graph: the slot's previous frame must be done before its graph, list and
+    // per-frame buffers are reused.
+    auto build = [&](uint32_t n) -> Status {
         const uint32_t slot = n % framesInFlight;
-        // The slot's previous frame must be done before its graph, list and per-frame buffers are reused.
         if (fences[slot]) CAUSTICS_CHECK(device.waitForFence(fences[slot]));
+        fences[slot] = 0;
         rg::RenderGraph& graph = *graphs[slot];
         graph.reset();
         for (ViewRequest& request : frameViews(n)) {
@@ -60,11 +62,29 @@ Result<std::vector<std::vector<FrameImage>>> runModuleFrames(
             });
             pending[n].push_back({readback, w, h});
         }
+        return okStatus();
+    };
+    auto execute = [&](uint32_t n) -> Status {
+        const uint32_t slot = n % framesInFlight;
         rhi::ICommandList& cmd = *lists[slot];
         cmd.begin();
-        CAUSTICS_CHECK(graph.execute(device, cmd));
+        CAUSTICS_CHECK(graphs[slot]->execute(device, cmd));
         cmd.end();
         CAUSTICS_TRY(fences[slot], device.submit(lists[slot]));
+        return okStatus();
+    };
+    if (order == FrameOrder::BuildAhead && framesInFlight < 2)
+        return makeError("runModuleFrames: building ahead needs two graphs (framesInFlight >= 2)");
+    for (uint32_t n = 0; n < frames; ++n) {
+        if (order == FrameOrder::InTurn) {
+            CAUSTICS_CHECK(build(n));
+            CAUSTICS_CHECK(execute(n));
+            continue;
+        }
+        // A render thread one frame ahead of the GPU: frame n + 1 is built before frame n executes.
+        if (n == 0) CAUSTICS_CHECK(build(0));
+        if (n + 1 < frames) CAUSTICS_CHECK(build(n + 1));
+        CAUSTICS_CHECK(execute(n));
     }
     CAUSTICS_CHECK(device.waitIdle());
     std::vector<std::vector<FrameImage>> images(frames);

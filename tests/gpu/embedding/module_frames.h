@@ -30,11 +30,15 @@ struct ViewRequest {
 ViewRequest viewOf(const scene::Camera& camera, uint32_t size, ModuleOutput output = ModuleOutput::Caustics,
                    CausticsView* view = nullptr);
 
+// InTurn: frame n is built, then executed, then frame n + 1 built. BuildAhead: a render thread ahead of
+// the GPU, frame n + 1 is built before frame n executes (docs/embedding.md "Frames and views").
+enum class FrameOrder { InTurn, BuildAhead };
+
 // Calls `frameViews(n)` for n = 0..frames-1 (it may change the module's scene first) and adds every
 // returned view to frame n's graph; returns images[n][view]. framesInFlight graphs rotate.
 Result<std::vector<std::vector<FrameImage>>> runModuleFrames(
     rhi::IDevice& device, CausticsModule& module, uint32_t frames, uint32_t framesInFlight,
-    const std::function<std::vector<ViewRequest>(uint32_t frame)>& frameViews);
+    const std::function<std::vector<ViewRequest>(uint32_t frame)>& frameViews, FrameOrder order = FrameOrder::InTurn);
 
 float luminance(const glm::vec3& v);
 

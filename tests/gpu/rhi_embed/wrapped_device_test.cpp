@@ -3,6 +3,8 @@
 // buffer, which the host submits on its own queue. Results are checked byte for byte (integer
 // arithmetic: no tolerance); the declared final layout is checked by the validation layer, which sees
 // the host's own copy from that layout, and every layer message fails the test.
+#include <algorithm>
+#include <cstdio>
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -279,6 +281,25 @@ TEST_F(WrappedVulkanDevice, ImportOfBufferWithoutStorageUsageForStorageUseIsRefu
     EXPECT_NE(refused.message().find("VK_BUFFER_USAGE_STORAGE_BUFFER_BIT"), std::string::npos) << refused.message();
     EXPECT_EQ(refused.message().find("Constant"), std::string::npos) << "Constant is allowed: " << refused.message();
     host.destroy(buffer);
+}
+
+// The render graph places buffers and optimal images in one heap: each virtual resource's requirements
+// start and end on the device's bufferImageGranularity page (Vulkan spec 12.7), read from the device,
+// not a fixed 1024 bytes.
+TEST_F(WrappedVulkanDevice, VirtualResourceRequirementsFollowTheDevicesBufferImageGranularity) {
+    ASSERT_TRUE(wrapHost());
+    VkPhysicalDeviceProperties props{};
+    vkGetPhysicalDeviceProperties(host.physicalDevice, &props);
+    const uint64_t page = std::max<uint64_t>(1, props.limits.bufferImageGranularity);
+    const MemoryRequirements buffer = device->memoryRequirements(BufferDesc().setByteSize(100).setVirtual(true));
+    const MemoryRequirements texture = device->memoryRequirements(
+        TextureDesc().setSize(3, 3).setFormat(Format::R32_FLOAT).setUsage(TextureUsage::Storage).setVirtual(true));
+    for (const MemoryRequirements& r : {buffer, texture}) {
+        EXPECT_EQ(r.alignment % page, 0u) << "granularity " << page;
+        EXPECT_EQ(r.size % page, 0u) << "granularity " << page << ", size " << r.size;
+    }
+    std::printf("[ measured ] bufferImageGranularity %llu: 100-byte buffer -> %llu bytes, 3x3 R32F image -> %llu\n",
+                (unsigned long long)page, (unsigned long long)buffer.size, (unsigned long long)texture.size);
 }
 
 TEST_F(WrappedVulkanDevice, HostCommandBufferIsNeverSubmittedByTheDevice) {

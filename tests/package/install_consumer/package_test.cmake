@@ -56,3 +56,23 @@ run("configure consumer" ${CMAKE_COMMAND} -S "${CONSUMER_DIR}" -B "${consumerBui
     "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" ${launcher} -DCMAKE_BUILD_TYPE=Release)
 run("build consumer" ${CMAKE_COMMAND} --build "${consumerBuild}")
 run("run consumer" "${consumerBuild}/caustics_consumer")
+
+# 4. A Vulkan-only consumer: the same program with CAUSTICS_VULKAN_ONLY on its target links nothing of
+# the D3D12 backend (no caustics_rhi_d3d12, no DirectX-Guids on its link line), and runs.
+set(vulkanBuild "${WORK_DIR}/vulkan-consumer-build")
+run("configure Vulkan-only consumer" ${CMAKE_COMMAND} -S "${CONSUMER_DIR}" -B "${vulkanBuild}" -G "${GENERATOR}"
+    "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" ${launcher} -DCMAKE_BUILD_TYPE=Release
+    -DCAUSTICS_CONSUMER_VULKAN_ONLY=ON)
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${vulkanBuild}" --verbose
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "package test: build Vulkan-only consumer failed (${rc}):\n${out}\n${err}")
+endif()
+foreach(d3d12Part "caustics_rhi_d3d12" "DirectX-Guids")
+  string(FIND "${out}" "${d3d12Part}" at)
+  if(NOT at EQUAL -1)
+    message(FATAL_ERROR "package test: the Vulkan-only consumer links ${d3d12Part}:\n${out}")
+  endif()
+endforeach()
+message(STATUS "package test: build Vulkan-only consumer (no D3D12 on its link line): ok")
+run("run Vulkan-only consumer" "${vulkanBuild}/caustics_consumer")

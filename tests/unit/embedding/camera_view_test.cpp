@@ -156,3 +156,28 @@ TEST(CameraConstants, DegenerateEyeTargetCameraIsRefusedNamingTheField) {
 
 }  // namespace
 }  // namespace caustics
+
+namespace caustics {
+namespace {
+// CameraView::jitterPixels given apart: jittering the unjittered projection is the jittered one of
+// cameraViewMatrices, and jittering a view-projection shifts every projected point by the jitter.
+TEST(HostJitterApart, JitteringTheUnjitteredProjectionGivesTheJitteredOne) {
+    scene::Camera cam;
+    cam.eye = {0.0f, 1.0f, 3.0f};
+    cam.target = {0.0f, 0.5f, 0.0f};
+    constexpr uint32_t w = 64, h = 48;
+    const glm::vec2 jitter{0.3f, -0.45f};
+    const CameraView plain = cameraViewMatrices(cam, w, h);
+    const CameraView jittered = cameraViewMatrices(cam, w, h, {.jitterPixels = jitter});
+    const glm::mat4 ours = jitterClipMatrix(plain.proj, jitter, w, h);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_NEAR(ours[c][r], jittered.proj[c][r], 1e-6f) << c << "," << r;
+    // A world point lands jitter pixels away in the jittered view-projection (x right, y down).
+    const glm::vec4 p(0.2f, 0.7f, -0.4f, 1.0f);
+    const glm::vec4 a = plain.proj * plain.view * p;
+    const glm::vec4 b = jitterClipMatrix(plain.proj * plain.view, jitter, w, h) * p;
+    EXPECT_NEAR((b.x / b.w - a.x / a.w) * 0.5f * w, jitter.x, 1e-4f);
+    EXPECT_NEAR((b.y / b.w - a.y / a.w) * 0.5f * h, jitter.y, 1e-4f);
+}
+}  // namespace
+}  // namespace caustics

@@ -14,6 +14,7 @@ struct ID3D12CommandQueue;
 struct ID3D12Resource;
 struct ID3D12GraphicsCommandList4;
 struct ID3D12Fence;
+struct ID3D12DescriptorHeap;
 
 namespace caustics::rhi {
 
@@ -98,10 +99,17 @@ struct D3D12CommandListImport {
     ID3D12GraphicsCommandList4* commandList = nullptr;   // open (Reset by the host), DIRECT type
     bool allowTimestamps = true;   // false: no queries recorded, per-pass times stay empty
     std::string debugName = "host command list";
+    // The shader-visible heaps the host has set on the list (CBV_SRV_UAV, SAMPLER; either may be null).
+    // D3D12 cannot read them back from a list, so the host names them: the module sets its own heaps
+    // at the start of each of its passes and sets these again at the end of each, so the host's
+    // descriptor tables are valid again after the graph (and after every pass, for a host pass between).
+    ID3D12DescriptorHeap* hostDescriptorHeaps[2] = {nullptr, nullptr};
 };
 // An ICommandList that records into the host's list. begin()/end() record nothing (the host resets,
-// closes and executes it); the module's shader-visible descriptor heaps are set on it when a pass
-// binds, so the host must set its own heaps again after the graph if it needs them.
+// closes and executes it). The module's shader-visible descriptor heaps are set on it for each of its
+// passes (the render graph's beginMarker) and the host's `hostDescriptorHeaps` restored after each
+// (endMarker); without them the module's stay set after the graph. A host's root signature and
+// tables are never restored: set them again after the graph, as after any SetDescriptorHeaps.
 Result<CommandListHandle> wrapD3D12CommandList(IDevice& device, const D3D12CommandListImport& desc);
 
 // Before the host closes and executes a wrapped list: fails with the first recording error, else

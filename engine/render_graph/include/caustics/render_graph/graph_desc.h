@@ -43,9 +43,18 @@ struct PassDecl {
     std::vector<AccessDecl> accesses;
 };
 
+// Resources a library handed to the host (e.g. CausticsModule::addPasses' outputs): at least one must be
+// read by a kept pass or marked as an output, else compile() fails, since culling would drop every
+// pass that makes them without a word (RenderGraph::expectConsumer).
+struct ExpectedConsumer {
+    std::string owner;
+    std::vector<uint32_t> anyOf;   // resource indices
+};
+
 struct GraphDesc {
     std::vector<ResourceDecl> resources;
     std::vector<PassDecl> passes;
+    std::vector<ExpectedConsumer> expectedConsumers;
 };
 
 }  // namespace caustics::rg

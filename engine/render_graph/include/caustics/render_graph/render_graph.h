@@ -12,6 +12,7 @@
 //   graph.markOutput(out);
 //   graph.execute(device, cmd);   // cmd is begun; the host ends and submits it
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,6 +54,11 @@ public:
     void markOutput(RgTexture texture, rhi::ResourceState final = rhi::ResourceState::Undefined);
     void markOutput(RgBuffer buffer, rhi::ResourceState final = rhi::ResourceState::Undefined);
     void markOutput(RgAccelStruct as);
+    // A library that adds passes for the host (the caustics module) names what it hands back: compile()
+    // fails, naming them and `owner`, when none of `anyOf` reaches the host: the producer of its latest
+    // version is culled and no kept pass reads it (the graph would cull every pass that makes them
+    // without a word: a black image). Invalid handles in `anyOf` are skipped.
+    void expectConsumer(std::initializer_list<RgTexture> anyOf, std::string owner);
 
     // Compile without a device (memory sizes from `sizer`); execute() compiles again with the device.
     Status compile(const IMemorySizer& sizer);

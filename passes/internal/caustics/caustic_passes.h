@@ -124,8 +124,23 @@ struct CausticViewHistory {
     uint32_t parity = 0;
     uint32_t width = 0, height = 0;
     // True once a frame's caustics.temporal pass has been RECORDED (graph execution), so a graph that is
-    // built and never executed does not make the history look valid.
+    // built and never executed does not make the history look valid. `parity` is then the copy it wrote.
     bool valid = false;
+    // The same two as left by the last BUILT graph. A host may build frame n + 1 before it executes frame
+    // n (a render thread ahead of the GPU): frame n + 1 then reads the copy frame n writes, and
+    // caustics.temporal checks at execution that the last executed frame did write it (else it ignores
+    // the history, as after a cut). docs/embedding.md "Frames and views".
+    uint32_t builtParity = 0;
+    bool builtValid = false;
+    // A build that never executed (a graph built to be compiled only, then dropped) is undone when the
+    // next build is for the same or an earlier frame: the frame it built and the state before it, and
+    // the frame the last executed caustics.temporal belonged to.
+    std::optional<uint32_t> lastBuiltFrame, lastExecutedFrame;
+    uint32_t parityBeforeLastBuild = 0;
+    bool validBeforeLastBuild = false;
+    // The CausticsView this history belongs to (0: CausticResources' own): per-view state of the
+    // module (the sphere-count readbacks) is keyed by it, never by an address.
+    uint64_t viewId = 0;
 };
 
 // Objects that live across frames: pipelines, the sphere BLAS/TLAS. Create once per device and scene
@@ -151,6 +166,12 @@ private:
 // BLAS and TLAS of the second type and the sphere-count readbacks; and one view's filter history.
 void appendCausticMemory(CausticResources& resources, std::vector<MemoryEntry>& out);
 void appendHistoryMemory(const CausticViewHistory& history, const std::string& prefix, std::vector<MemoryEntry>& out);
+// Makes the ray-tracing pipelines and shader tables for scenes bound with `sceneLayout` (their upload
+// submits and waits): CausticsModule::prepare calls it so that addCausticPasses never submits.
+Status prepareCausticPipelines(CausticResources& resources, const rhi::BindingLayoutHandle& sceneLayout);
+// Releases what `resources` keeps for view `viewId` (its sphere-count readbacks): called for a
+// destroyed view, whose frames the host has finished (the RHI defers the buffers' destruction anyway).
+void releaseCausticView(CausticResources& resources, uint64_t viewId);
 
 struct CausticFrameInputs {
     rhi::IDevice* device = nullptr;
@@ -160,7 +181,12 @@ struct CausticFrameInputs {
     GBuffer gbuffer;                   // W x H, this frame's
     CameraConstants camera;            // prevViewProj = last frame's viewProj (filter reprojection)
     CausticsSettings settings;
-    uint32_t frameIndex = 0;
+    uint32_t frameIndex = 0;           // the frame number: seeds the photons (FrameInputs::frameIndex)
+    std::optional<uint32_t> frameSlot; // the frame-in-flight slot (< settings.framesInFlight); unset:
+                                       // frameIndex % framesInFlight
+    // Filled when the graph executes (the module's view.begin, first in the graph): the camera constants
+    // with the previous view-projection the view had then; null: `camera` as built.
+    std::shared_ptr<const CameraConstants> executedCamera;
     bool resetHistory = false;         // camera cut: the filter forgets the past
     // The view's filter history; null: one history owned by CausticResources (a single view).
     CausticViewHistory* history = nullptr;
