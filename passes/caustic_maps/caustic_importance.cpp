@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace caustics {
 
@@ -41,14 +42,20 @@ bool sphereMayBeSeen(const CausticView& view, glm::vec3 c, float r) {
     return true;
 }
 
+// viewCoverage's and imageCoverage's common cases: 1 with the eye inside, 0 where it cannot be seen.
+std::optional<float> trivialCoverage(const CausticView& view, glm::vec3 c, float r, float distance) {
+    if (distance <= r) return 1.0f;
+    if (!sphereMayBeSeen(view, c, r)) return 0.0f;
+    return std::nullopt;
+}
+
 }  // namespace
 
 float viewCoverage(const CausticView& view, glm::vec4 sphere) {
     const glm::vec3 c(sphere);
     const float r = sphere.w;
     const float distance = glm::length(c - view.eye);
-    if (distance <= r) return 1.0f;
-    if (!sphereMayBeSeen(view, c, r)) return 0.0f;
+    if (const std::optional<float> trivial = trivialCoverage(view, c, r, distance)) return *trivial;
     // Angular radius asin(r / d); the projected disk's radius on the image plane is tan of it, in
     // units of the half image height tanHalfFovY.
     const float tanAngle = r / std::sqrt(std::max(distance * distance - r * r, 1e-20f));
@@ -61,8 +68,7 @@ float imageCoverage(const CausticView& view, glm::vec4 sphere) {
     const glm::vec3 c(sphere);
     const float r = sphere.w;
     const float distance = glm::length(c - view.eye);
-    if (distance <= r) return 1.0f;
-    if (!sphereMayBeSeen(view, c, r)) return 0.0f;
+    if (const std::optional<float> trivial = trivialCoverage(view, c, r, distance)) return *trivial;
     // The sphere's image on the plane at focal distance 1 is a conic section of its tangent cone: with
     // angular radius alpha = asin(r / d) and its centre theta off the view axis, an ellipse of area
     // pi sin^2(alpha) cos(alpha) / (cos^2(theta) - sin^2(alpha))^(3/2) (pi tan^2 alpha on the axis).

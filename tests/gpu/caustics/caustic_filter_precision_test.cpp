@@ -12,6 +12,7 @@
 #include <cstdio>
 
 #include "caustic_harness.h"
+#include "caustic_test_scene.h"
 #include "gpu_test.h"
 #include "caustics/scene/builtin_scenes.h"
 
@@ -22,24 +23,6 @@ constexpr uint32_t kSize = 96;
 // Bilinear weight a still camera's reprojection can give a neighbouring history texel (world position
 // from depth and back, in float): measured up to 3.3e-5 on this view (2026-12-01); the bound allows 1e-3.
 constexpr double kLeak = 1e-3;
-
-// The filter tests' glass ball and its focal spot (caustic_filter_test.cpp).
-scene::Scene ballScene() {
-    scene::AnalyticSceneDesc d;
-    d.radius = 0.5f;
-    d.tessellation = 96;
-    d.lightDirection = glm::normalize(glm::vec3(0.6f, -1.0f, 0.0f));
-    d.height = 0.75f * -d.lightDirection.y;
-    return scene::makeGlassSphereScene(d);
-}
-
-scene::Camera towardsTheSpot() {
-    scene::Camera c;
-    c.eye = {1.6f, 1.0f, 1.2f};
-    c.target = {0.35f, 0.0f, 0.0f};
-    c.verticalFovRadians = glm::radians(30.0f);
-    return c;
-}
 
 CausticsSettings temporalOnly(float exposure) {
     CausticsSettings s;
@@ -66,8 +49,8 @@ class CausticFilterPrecision : public GpuTest {};
 TEST_F(CausticFilterPrecision, HalfPrecisionHistoryIsWithinHalfAnUlpPerStoreOfTheMean) {
     for (float exposure : {1.0f / 64.0f, 1.0f, 64.0f}) {
         const CausticsSettings s = temporalOnly(exposure);
-        auto first = runCaustics(*device, ballScene(), towardsTheSpot(), kSize, kSize, s, 1);
-        auto second = runCaustics(*device, ballScene(), towardsTheSpot(), kSize, kSize, s, 2);
+        auto first = runCaustics(*device, filterBallScene(), towardsTheFilterBallSpot(), kSize, kSize, s, 1);
+        auto second = runCaustics(*device, filterBallScene(), towardsTheFilterBallSpot(), kSize, kSize, s, 2);
         ASSERT_TRUE(first) << first.message();
         ASSERT_TRUE(second) << second.message();
         const std::vector<glm::vec3> f0 = unfiltered(first.value()), f1 = unfiltered(second.value());

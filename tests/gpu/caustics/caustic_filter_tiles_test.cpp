@@ -7,6 +7,7 @@
 #include <set>
 
 #include "caustic_harness.h"
+#include "caustic_test_scene.h"
 #include "gpu_test.h"
 #include "caustics/scene/builtin_scenes.h"
 
@@ -15,29 +16,11 @@ namespace {
 
 constexpr uint32_t kSize = 96;
 
-// The filter test's glass ball (caustic_filter_test.cpp): its focal spot lies on the floor beside it.
-scene::Scene ballScene() {
-    scene::AnalyticSceneDesc d;
-    d.radius = 0.5f;
-    d.tessellation = 96;
-    d.lightDirection = glm::normalize(glm::vec3(0.6f, -1.0f, 0.0f));
-    d.height = 0.75f * -d.lightDirection.y;
-    return scene::makeGlassSphereScene(d);
-}
-
-scene::Camera towardsTheSpot() {
-    scene::Camera c;
-    c.eye = {1.6f, 1.0f, 1.2f};
-    c.target = {0.35f, 0.0f, 0.0f};
-    c.verticalFovRadians = glm::radians(30.0f);
-    return c;
-}
-
 // The same eye turned away from the ball, to the floor 3-4 m off. Stray photons (reflected inside the
 // ball) land all over the floor at low density: of five such views tried, this one and one other got
 // none at the default seed (the others 1-4 tiles).
 scene::Camera awayFromTheSpot() {
-    scene::Camera c = towardsTheSpot();
+    scene::Camera c = towardsTheFilterBallSpot();
     c.target = {-1.0f, 0.0f, 3.8f};
     return c;
 }
@@ -96,7 +79,7 @@ class CausticFilterTiles : public GpuTest {};
 // First frame (no history): exactly the tiles with photons and their neighbours are listed, and the
 // filtered image is zero outside them (no pass wrote there; caustics.radiance keeps the resolve's zeros).
 TEST_F(CausticFilterTiles, FirstFrameListsExactlyTheTilesWithPhotonsAndTheirNeighbours) {
-    auto run = runCaustics(*device, ballScene(), towardsTheSpot(), kSize, kSize, settings());
+    auto run = runCaustics(*device, filterBallScene(), towardsTheFilterBallSpot(), kSize, kSize, settings());
     ASSERT_TRUE(run) << run.message();
     const CausticRun& r = run.value();
     const std::set<uint32_t> photons = photonTiles(r), expected = dilated(photons, kSize / 8, kSize / 8);
@@ -114,15 +97,15 @@ TEST_F(CausticFilterTiles, FirstFrameListsExactlyTheTilesWithPhotonsAndTheirNeig
 // reprojects off screen, so none of it is carried; only the stray photons of that frame (if any: the
 // frame index changes the samples) list their tiles.
 TEST_F(CausticFilterTiles, EmptyViewListsNoTileAndWritesNothing) {
-    auto fresh = runCaustics(*device, ballScene(), awayFromTheSpot(), kSize, kSize, settings());
+    auto fresh = runCaustics(*device, filterBallScene(), awayFromTheSpot(), kSize, kSize, settings());
     ASSERT_TRUE(fresh) << fresh.message();
     ASSERT_EQ(photonTiles(fresh.value()).size(), 0u) << "photons landed in the empty view";
     EXPECT_EQ(fresh.value().filterTiles, 0u);
     EXPECT_EQ(nonZeroPixels(fresh.value().radiance), 0u);
 
-    std::vector<scene::Camera> cameras(8, towardsTheSpot());
+    std::vector<scene::Camera> cameras(8, towardsTheFilterBallSpot());
     cameras.push_back(awayFromTheSpot());
-    auto turned = runCaustics(*device, ballScene(), cameras, kSize, kSize, settings());
+    auto turned = runCaustics(*device, filterBallScene(), cameras, kSize, kSize, settings());
     ASSERT_TRUE(turned) << turned.message();
     const CausticRun& r = turned.value();
     const std::set<uint32_t> stray = dilated(photonTiles(r), kSize / 8, kSize / 8);
@@ -139,16 +122,16 @@ TEST_F(CausticFilterTiles, EmptyViewListsNoTileAndWritesNothing) {
 TEST_F(CausticFilterTiles, EmptyViewKeepsNoHistory) {
     CausticsSettings st = settings();
     st.atrousIterations = 0;
-    scene::Camera sky = towardsTheSpot();
+    scene::Camera sky = towardsTheFilterBallSpot();
     sky.target = sky.eye + glm::vec3(0.0f, 1.0f, 0.1f);
-    std::vector<scene::Camera> cameras(4, towardsTheSpot());
+    std::vector<scene::Camera> cameras(4, towardsTheFilterBallSpot());
     cameras.push_back(sky);
-    auto skyOnly = runCaustics(*device, ballScene(), cameras, kSize, kSize, st);
+    auto skyOnly = runCaustics(*device, filterBallScene(), cameras, kSize, kSize, st);
     ASSERT_TRUE(skyOnly) << skyOnly.message();
     EXPECT_EQ(skyOnly.value().filterTiles, 0u);
     EXPECT_EQ(nonZeroPixels(skyOnly.value().radiance), 0u);
-    cameras.push_back(towardsTheSpot());
-    auto back = runCaustics(*device, ballScene(), cameras, kSize, kSize, st);
+    cameras.push_back(towardsTheFilterBallSpot());
+    auto back = runCaustics(*device, filterBallScene(), cameras, kSize, kSize, st);
     ASSERT_TRUE(back) << back.message();
     const CausticRun& r = back.value();
     size_t differ = 0;
@@ -157,7 +140,7 @@ TEST_F(CausticFilterTiles, EmptyViewKeepsNoHistory) {
     EXPECT_GT(nonZeroPixels(r.radiance), 0u);
     // Control: without the sky frame the same frame is a mean (history kept), so the check above can fail.
     cameras.erase(cameras.begin() + 4);
-    auto kept = runCaustics(*device, ballScene(), cameras, kSize, kSize, st);
+    auto kept = runCaustics(*device, filterBallScene(), cameras, kSize, kSize, st);
     ASSERT_TRUE(kept) << kept.message();
     size_t averaged = 0;
     for (size_t i = 0; i < kept.value().radiance.size(); ++i)
@@ -171,13 +154,13 @@ TEST_F(CausticFilterTiles, EmptyViewKeepsNoHistory) {
 // and reads as zero. The light goes out after 4 lit frames (filterMaxHistory 4): 3 dark frames later the
 // history still shows (tiles listed, light in the image), 4 dark frames later nothing is listed or shown.
 TEST_F(CausticFilterTiles, HistoryIsKeptFilterMaxHistoryFramesAfterTheLastPhoton) {
-    const scene::Scene s = ballScene();
+    const scene::Scene s = filterBallScene();
     CausticsSettings st = settings();
     st.filterMaxHistory = 4;
     auto run = [&](uint32_t darkFrames) {
         std::vector<std::vector<scene::Light>> lights(4, s.lights);
         lights.insert(lights.end(), darkFrames, std::vector<scene::Light>{});
-        const std::vector<scene::Camera> cameras(lights.size(), towardsTheSpot());
+        const std::vector<scene::Camera> cameras(lights.size(), towardsTheFilterBallSpot());
         return runCaustics(*device, s, cameras, kSize, kSize, st, 3, lights);
     };
     auto three = run(3), four = run(4);
@@ -196,7 +179,7 @@ TEST_F(CausticFilterTiles, HistoryIsKeptFilterMaxHistoryFramesAfterTheLastPhoton
 TEST_F(CausticFilterTiles, TemporalOnlyFirstFrameIsTheUnfilteredFrame) {
     CausticsSettings st = settings();
     st.atrousIterations = 0;
-    auto run = runCaustics(*device, ballScene(), towardsTheSpot(), kSize, kSize, st);
+    auto run = runCaustics(*device, filterBallScene(), towardsTheFilterBallSpot(), kSize, kSize, st);
     ASSERT_TRUE(run) << run.message();
     const CausticRun& r = run.value();
     size_t differ = 0;

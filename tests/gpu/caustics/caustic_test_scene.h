@@ -35,4 +35,22 @@ inline CausticsSettings smallSettings() {
     return s;
 }
 
+// The filter tests' glass ball (caustic_filter_test.cpp): its focal spot lies on the floor beside it.
+inline scene::Scene filterBallScene() {
+    scene::AnalyticSceneDesc d;
+    d.radius = 0.5f;
+    d.tessellation = 96;
+    d.lightDirection = glm::normalize(glm::vec3(0.6f, -1.0f, 0.0f));
+    d.height = 0.75f * -d.lightDirection.y;
+    return scene::makeGlassSphereScene(d);
+}
+
+inline scene::Camera towardsTheFilterBallSpot() {
+    scene::Camera c;
+    c.eye = {1.6f, 1.0f, 1.2f};
+    c.target = {0.35f, 0.0f, 0.0f};
+    c.verticalFovRadians = glm::radians(30.0f);
+    return c;
+}
+
 }  // namespace caustics::test

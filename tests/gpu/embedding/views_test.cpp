@@ -41,15 +41,16 @@ ViewRequest request(const scene::Camera& cam, CausticsView* view) { return viewO
 // history worth sharing.
 constexpr uint32_t kFrames = 4;
 
-// Measured (lavapipe 2026-12-01, "[ measured ]" lines, four runs, with the SVGF-like filter of
-// docs/caustics.md "Filter"): the same view rendered twice alone differs by 2.5e-6 to 4.7e-6 (the order
-// of atomic adds, amplified by the a-trous luminance weights, which depend on the noise itself), the main
-// view rendered next to the side view differs from it alone by 1.6e-6 to 6.1e-6, and the side view's
-// image differs from the main one by 0.363. Were the history shared, the main view's temporal pass
-// (1/n average) would give (n - 1)/n = 75 % weight at frame 4 to the side view's history wherever its
-// reprojection test passes, moving the result by a large fraction of 0.363. Bound 1e-4: 16x the largest
-// measurement, still over 1000x below what a shared history does.
-constexpr double kViewBound = 1e-4;
+// Measured (lavapipe 2026-12-02, "[ measured ]" lines, four runs, with the half-precision tile-pool
+// filter of docs/caustics.md "Filter"): the same view rendered twice alone differs by 0 or 1.26e-4, and
+// the main view rendered next to the side view differs from it alone by the same two values: the order
+// of atomic adds flips a few pixels' rounding to half precision (1/2048 relative), which the a-trous
+// luminance weights spread; before the half-precision history the spread was 1.6e-6 to 6.1e-6. The
+// side view's image differs from the main one by 0.369. Were the history shared, the main view's
+// temporal pass (1/n average) would give (n - 1)/n = 75 % weight at frame 4 to the side view's history
+// wherever its reprojection test passes, moving the result by a large fraction of 0.369. Bound 1e-3:
+// 8x the largest measurement, still over 100x below what a shared history does.
+constexpr double kViewBound = 1e-3;
 
 TEST_F(Views, TwoViewsInOneFrameKeepIndependentHistories) {
     scene::Scene scene = spotSphereScene();
