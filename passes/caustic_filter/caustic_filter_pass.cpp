@@ -115,7 +115,6 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
 void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, FilterFrame& ff, rg::RgTexture raw,
                      bool historyUsable, uint32_t readCopy) {
     const GBuffer& g = f.in->gbuffer;
-    CausticViewHistory& history = *f.history;
     const uint32_t next = readCopy ^ 1u, frameIndex = f.in->frameIndex;
     graph.addPass("caustics.temporal", [&](rg::PassBuilder& b) {
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
