@@ -86,7 +86,7 @@ uint64_t forwardLaunchBound(const CausticsSettings& s, const CausticMapPlan& pla
 // 2^30 is the smallest maxRayDispatchInvocationCount Vulkan allows and D3D12's DispatchRays limit;
 // every sphere of the second type is one TLAS instance, so the first sphere allocation
 // (caustics/sphere_capacity.h) must fit maxInstanceCount (growth stops at it).
-Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan, double specularCoverage) {
+Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan, uint32_t firstSphereAllocation) {
     constexpr uint64_t kMaxRayLaunches = 1ull << 30;
     const uint64_t launches = forwardLaunchBound(in.settings, plan);
     if (launches > kMaxRayLaunches)
@@ -97,7 +97,7 @@ Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& pla
                          " ray launches, over the 2^30 a dispatch may have; lower mapResolution, raysPerTexel or "
                          "photonsPerFrame");
     const uint64_t pixels = uint64_t(in.gbuffer.width) * in.gbuffer.height;
-    const uint64_t slots = pixels > UINT32_MAX ? pixels : initialSphereAllocation(uint32_t(pixels), specularCoverage);
+    const uint64_t slots = pixels > UINT32_MAX ? pixels : firstSphereAllocation;
     const uint64_t maxInstances = in.device ? in.device->capabilities().maxInstanceCount : 0;
     if (in.settings.secondType && maxInstances != 0 && slots > maxInstances)
         return makeError("addCausticPasses: secondType's first sphere allocation (the specular surfaces in view) at " +
@@ -128,8 +128,10 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     const SpecularBounds bounds = computeSpecularBounds(*in.scene);
     CausticMapPlan plan = planCausticMaps(*in.scene, bounds, planOptions);
     // What the camera sees of the specular surfaces sizes the second type's first allocation.
+    const uint32_t pixels = in.gbuffer.width * in.gbuffer.height;
     const double specularCoverage = in.settings.secondType ? imageCoverageSum(view, bounds.instanceSpheres, bounds.instanceLo, bounds.instanceHi) : 0.0;
-    CAUSTICS_CHECK(checkDeviceLimits(in, plan, specularCoverage));
+    const uint32_t firstSphereAllocation = initialSphereAllocation(pixels, specularCoverage);
+    CAUSTICS_CHECK(checkDeviceLimits(in, plan, firstSphereAllocation));
     CAUSTICS_CHECK(res->ensureScenePipelines(in.sceneBindings->layout));
     const uint32_t slot = in.frameSlot.value_or(in.frameIndex % uint32_t(res->frameSets.size()));
     if (slot >= res->frameSets.size())
@@ -138,9 +140,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     res->frameSlot = slot;
     res->frameSets[res->frameSlot].clear();
     res->retiredSphereTlas[res->frameSlot].clear();
-    const uint32_t pixels = in.gbuffer.width * in.gbuffer.height;
-    if (in.settings.secondType)
-        CAUSTICS_CHECK(res->ensureSizeResources(pixels, initialSphereAllocation(pixels, specularCoverage), res->frameSlot));
+    if (in.settings.secondType) CAUSTICS_CHECK(res->ensureSizeResources(pixels, firstSphereAllocation, res->frameSlot));
     CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
     if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
 
