@@ -5,6 +5,7 @@
 #include <cstring>
 #include <thread>
 
+#include "d3d12_features.h"
 #include "d3d12_objects.h"
 #include "shader_compile_options.h"
 
@@ -123,6 +124,9 @@ Status Device::finishInit() {
     // HLSL has no float atomic add at any shader model (SM 6.6 adds 64-bit integer atomics and only
     // bitwise float compare-exchange), so passes take fixed point or a CAS loop (radiance_atomics.hlsli).
     caps_.shaderFloatAtomicAdd = false;
+    const D3D12FeatureReport features = queryD3D12Features(device_.get());
+    shaderModel_ = features.highestShaderModel;
+    caps_.shaderBufferInt64Atomics = wideFixedPointAtomics(features) && !narrowFixedPointForced();
     caps_.shaderGroupHandleSize = D3D12_SHADER_IDENTIFIER_SIZE_IN_BYTES;
     caps_.shaderGroupHandleAlignment = D3D12_RAYTRACING_SHADER_RECORD_BYTE_ALIGNMENT;
     caps_.shaderGroupBaseAlignment = D3D12_RAYTRACING_SHADER_TABLE_BYTE_ALIGNMENT;
@@ -164,7 +168,7 @@ Result<std::vector<uint8_t>> Device::bytecodeFor(const ShaderCode& code, const s
                                                  ShaderStage stage, bool library) {
     CAUSTICS_CHECK(checkShaderCodeKind(code));
     if (code.kind == ShaderCodeKind::DXIL) return code.bytes;
-    CAUSTICS_TRY(std::string profile, hlslTargetProfile(stage, library));
+    CAUSTICS_TRY(std::string profile, hlslTargetProfile(stage, library, shaderModel_));
     std::string source(code.bytes.begin(), code.bytes.end());
     return compiler_->compile(source, code.debugName, dxcArguments(profile, entryPoint, library, debugLayer_));
 }

@@ -89,6 +89,7 @@ private:
 
     RuntimeLibraries libs_;
     Capabilities caps_;
+    uint32_t shaderModel_ = 0;   // the device's highest (D3D_SHADER_MODEL): picks the HLSL profiles
     bool debugLayer_ = false;
     ComPtr<ID3D12Device5> device_;
     ComPtr<ID3D12CommandQueue> queue_;

@@ -3,26 +3,11 @@
 // taken; the module creates only its fence, descriptor heaps and its own resources.
 #include "caustics/rhi/d3d12_interop.h"
 #include "d3d12_device.h"
+#include "d3d12_features.h"
 #include "host_objects.h"
 
 namespace caustics::rhi {
 namespace d3d12 {
-namespace {
-
-// The highest shader model the device takes: CheckFeatureSupport fails for models newer than the
-// runtime knows, so ask from high to low (D3D12_FEATURE_DATA_SHADER_MODEL docs).
-uint32_t highestShaderModel(ID3D12Device5* device) {
-    for (D3D_SHADER_MODEL model : {D3D_SHADER_MODEL_6_6, D3D_SHADER_MODEL_6_5, D3D_SHADER_MODEL_6_4,
-                                   D3D_SHADER_MODEL_6_3, D3D_SHADER_MODEL_6_0}) {
-        D3D12_FEATURE_DATA_SHADER_MODEL data{model};
-        if (succeeded(device->CheckFeatureSupport(D3D12_FEATURE_SHADER_MODEL, &data, sizeof(data))))
-            return uint32_t(data.HighestShaderModel);
-    }
-    return 0;
-}
-
-}  // namespace
-
 Result<DeviceHandle> Device::wrap(ID3D12Device5* device, ID3D12CommandQueue* queue, const std::string& name,
                                   RuntimeLibraries libs) {
     auto wrapped = std::shared_ptr<Device>(new Device());
@@ -62,9 +47,7 @@ Result<DeviceHandle> wrapD3D12Device(const D3D12DeviceImport& desc) {
     const auto queueDesc = d3d12::describe<D3D12_COMMAND_QUEUE_DESC>(desc.queue);
     if (queueDesc.Type != D3D12_COMMAND_LIST_TYPE_DIRECT)
         return makeError("d3d12: wrapD3D12Device '" + desc.debugName + "': the queue is not a DIRECT queue");
-    D3D12_FEATURE_DATA_D3D12_OPTIONS5 o5{};
-    desc.device->CheckFeatureSupport(D3D12_FEATURE_D3D12_OPTIONS5, &o5, sizeof(o5));
-    D3D12FeatureReport report{uint32_t(o5.RaytracingTier), d3d12::highestShaderModel(desc.device)};
+    const D3D12FeatureReport report = d3d12::queryD3D12Features(desc.device);
     CAUSTICS_CHECK(checkD3D12DeviceRequirements(report, desc.requireRayTracing, desc.debugName));
     CAUSTICS_TRY(d3d12::RuntimeLibraries libs, d3d12::loadRuntimeLibraries());
     return d3d12::Device::wrap(desc.device, desc.queue, desc.debugName, std::move(libs));

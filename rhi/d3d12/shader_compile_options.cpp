@@ -2,14 +2,24 @@
 
 namespace caustics::rhi::d3d12 {
 
-Result<std::string> hlslTargetProfile(ShaderStage stage, bool library) {
-    if (library) return std::string("lib_6_3");
+namespace {
+constexpr uint32_t kShaderModel66 = 0x66;   // D3D_SHADER_MODEL_6_6
+}
+
+Result<std::string> hlslTargetProfile(ShaderStage stage, bool library, uint32_t deviceShaderModel) {
+    const bool sm66 = deviceShaderModel >= kShaderModel66;
+    if (library) return std::string(sm66 ? "lib_6_6" : "lib_6_3");
+    const std::string model = sm66 ? "_6_6" : "_6_0";
     switch (stage) {
-        case ShaderStage::Compute: return std::string("cs_6_0");
-        case ShaderStage::Vertex: return std::string("vs_6_0");
-        case ShaderStage::Fragment: return std::string("ps_6_0");
+        case ShaderStage::Compute: return "cs" + model;
+        case ShaderStage::Vertex: return "vs" + model;
+        case ShaderStage::Fragment: return "ps" + model;
         default: return makeError("d3d12: ray-tracing stages are compiled as a library (lib_6_3), not alone");
     }
+}
+
+bool wideFixedPointAtomics(const D3D12FeatureReport& report) {
+    return report.highestShaderModel >= kShaderModel66 && report.atomicInt64OnDescriptorHeapResource;
 }
 
 Status checkShaderCodeKind(const ShaderCode& code) {

@@ -18,6 +18,24 @@ TEST(D3D12ShaderCode, StagesCompileToShaderModel60Profiles) {
     EXPECT_FALSE(hlslTargetProfile(ShaderStage::ClosestHit, false).ok());
 }
 
+// The 64-bit fixed-point words (InterlockedAdd on uint64) exist only from shader model 6.6 on.
+TEST(D3D12ShaderCode, ShaderModel66DevicesCompileAsLib66AndCs66) {
+    EXPECT_EQ(hlslTargetProfile(ShaderStage::RayGen, true, 0x66).value(), "lib_6_6");
+    EXPECT_EQ(hlslTargetProfile(ShaderStage::Compute, false, 0x66).value(), "cs_6_6");
+    EXPECT_EQ(hlslTargetProfile(ShaderStage::RayGen, true, 0x65).value(), "lib_6_3");
+    EXPECT_EQ(hlslTargetProfile(ShaderStage::Fragment, false, 0x65).value(), "ps_6_0");
+}
+
+// SM 6.6 promises 64-bit atomics only on root-descriptor UAVs; the backend binds the radiance buffers
+// through descriptor tables, so OPTIONS11 must say yes too.
+TEST(D3D12ShaderCode, WideFixedPointNeedsShaderModel66AndDescriptorHeapInt64Atomics) {
+    EXPECT_TRUE(wideFixedPointAtomics({11, 0x66, true}));
+    EXPECT_TRUE(wideFixedPointAtomics({10, 0x67, true}));
+    EXPECT_FALSE(wideFixedPointAtomics({11, 0x66, false}));
+    EXPECT_FALSE(wideFixedPointAtomics({11, 0x65, true}));
+    EXPECT_FALSE(wideFixedPointAtomics({}));
+}
+
 TEST(D3D12ShaderCode, SpirvIsRefusedWithTheShadersName) {
     ShaderCode code{ShaderCodeKind::SPIRV, {1, 2, 3, 4}, "forward_trace.rgen"};
     Status s = checkShaderCodeKind(code);

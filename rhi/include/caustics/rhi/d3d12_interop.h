@@ -31,6 +31,9 @@ struct D3D12DeviceImport {
 struct D3D12FeatureReport {
     uint32_t raytracingTier = 0;       // D3D12_FEATURE_DATA_D3D12_OPTIONS5::RaytracingTier (10 = TIER_1_0)
     uint32_t highestShaderModel = 0;   // D3D12_FEATURE_DATA_SHADER_MODEL::HighestShaderModel (0x63 = 6.3)
+    // D3D12_FEATURE_DATA_D3D12_OPTIONS11: 64-bit atomics on UAVs reached through a descriptor heap, which
+    // is how the backend binds the caustic radiance buffers (SM 6.6 alone promises them only on root UAVs).
+    bool atomicInt64OnDescriptorHeapResource = false;
 };
 
 // ok, or ONE error naming every missing feature (e.g. "DXR: RaytracingTier 1.0 (device reports

@@ -39,7 +39,7 @@ struct Capabilities {
     bool rayQuery = false;
     bool shaderFloatAtomicAdd = false;   // atomicAdd on float storage buffers and images
     // 64-bit integer atomics on storage buffers (Vulkan shaderBufferInt64Atomics + shaderInt64; D3D12:
-    // SM 6.6 InterlockedAdd64, not yet reported there): the caustic fixed-point path's wide words.
+    // SM 6.6 + OPTIONS11 descriptor-heap int64 atomics, docs/d3d12.md): the fixed-point path's wide words.
     bool shaderBufferInt64Atomics = false;
     bool rayTracingIndirect = false;     // ICommandList::dispatchRaysIndirect
     uint32_t shaderGroupHandleSize = 32;
