@@ -1,6 +1,7 @@
 // Second type (paper 3.3): caustics.specularPixels (specular_pixels_pass.cpp), caustics.backward
-// (specular pixels -> spheres + TLAS instances appended at a counter), caustics.spheres (TLAS over one
-// unit-sphere BLAS, over the frame's capacity of GPU-written instances, caustics/sphere_capacity.h),
+// (specular pixels -> spheres + their AABBs appended at a counter), caustics.sphereBlas (one AABB per
+// sphere slot, the unwritten ones inactive; caustics/sphere_capacity.h), caustics.spheres (a top level
+// of that one BLAS),
 // caustics.gather (stored forward hits x spheres, any-hit density estimate) and caustics.sphereCount.
 // The cost follows the specular pixels and stored hits, not W x H (docs/caustics.md, "Second-type cost").
 #include <algorithm>
@@ -11,7 +12,6 @@ namespace caustics {
 
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
     CausticResources::Impl& res = *f.res;
-    const uint32_t pixels = f.width * f.height;
     const bool indirect = res.device->capabilities().rayTracingIndirect;
     prepareSphereBudget(f);
     addSpecularPixelPass(graph, f);
@@ -24,14 +24,13 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         f.spheres = b.write(b.createBuffer("caustics.spheres", rhi::BufferDesc().setByteSize(uint64_t(f.sphereAllocation) * sizeof(CausticSphere))
                                                                    .setUsage(rhi::BufferUsage::Storage).setDebugName("caustics.spheres")),
                             rg::Access::StorageWrite);
-        f.instances = b.write(f.instances, rg::Access::StorageWrite);
+        f.sphereAabbs = b.write(f.sphereAabbs, rg::Access::StorageWrite);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
-        uint64_t blas = res.sphereBlas->deviceAddress();
         // Mirrors the push block of shaders/vulkan/backward_trace/backward.rgen.
         struct Push {
             uint32_t policy;
             float scale, worldRadius;
-            uint32_t maxDepth, frame, blasLo, blasHi;
+            uint32_t maxDepth, frame;
             float minMagnification, maxMagnification, minRadius, maxRadius;
             uint32_t sphereCapacity;   // set when the graph executes
         } push{s.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint ? 0u : 1u,
@@ -39,8 +38,6 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
                s.sphereWorldRadius,
                s.maxSpecularDepth,
                f.in->frameIndex * 0x9E3779B9u + s.seed,
-               uint32_t(blas),
-               uint32_t(blas >> 32),
                s.sphereMinMagnification,
                s.sphereMaxMagnification,
                s.sphereMinRadius,
@@ -54,7 +51,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
             rhi::BindingSetDesc d;
             d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(h.camera)))
                 .add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(h.spheres)))
-                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.instances)))
+                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.sphereAabbs)))
                 .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.stats)))
                 .add(rhi::BindingSetItem::storageBuffer(6, ctx.buffer(h.specularPixels), false));
             rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.backwardLayout, d);
@@ -67,20 +64,29 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         };
     });
 
-    rg::RgAccelStruct blas = graph.importAccelStruct("caustics.sphereBlas", res.sphereBlas, rhi::ResourceState::AccelStructRead,
-                                                     rhi::ResourceState::AccelStructRead);
+    f.sphereBlas = graph.importAccelStruct("caustics.sphereBlas", res.sphereBlas, rhi::ResourceState::AccelStructRead,
+                                           rhi::ResourceState::AccelStructRead);
     f.sphereTlas = graph.importAccelStruct("caustics.sphereTlas", res.sphereTlas, rhi::ResourceState::AccelStructRead,
                                            rhi::ResourceState::AccelStructRead);
-    graph.addPass("caustics.spheres", [&](rg::PassBuilder& b) {
-        f.instances = b.read(f.instances, rg::Access::AccelStructBuildInput);
-        b.read(blas, rg::Access::AccelStructBuildRead);
-        f.sphereTlas = b.write(f.sphereTlas, rg::Access::AccelStructBuild);
+    graph.addPass("caustics.sphereBlas", [&](rg::PassBuilder& b) {
+        f.sphereAabbs = b.read(f.sphereAabbs, rg::Access::AccelStructBuildInput);
+        f.sphereBlas = b.write(f.sphereBlas, rg::Access::AccelStructBuild);
         CausticFrame h = f;
-        // Over the frame's capacity, never more than the TLAS's allocation (caustics/sphere_capacity.h).
         return [=](rg::PassContext& ctx) {
             if (*h.sphereCapacity == 0) return;   // no sphere the earlier frame: nothing built, nothing gathered
-            ctx.cmd().buildTopLevelFromBuffer(ctx.accelStruct(h.sphereTlas), ctx.buffer(h.instances), 0,
-                                              std::min(*h.sphereCapacity, pixels));
+            ctx.cmd().buildBottomLevel(ctx.accelStruct(h.sphereBlas));
+        };
+    });
+    graph.addPass("caustics.spheres", [&](rg::PassBuilder& b) {
+        f.sphereBlas = b.read(f.sphereBlas, rg::Access::AccelStructBuildRead);
+        f.sphereTlas = b.write(f.sphereTlas, rg::Access::AccelStructBuild);
+        CausticFrame h = f;
+        return [=](rg::PassContext& ctx) {
+            if (*h.sphereCapacity == 0) return;
+            // Identity transform; the intersection shader reads each sphere by its primitive index.
+            rhi::InstanceDesc one;
+            one.blasAddress = ctx.accelStruct(h.sphereBlas)->deviceAddress();
+            ctx.cmd().buildTopLevel(ctx.accelStruct(h.sphereTlas), std::span<const rhi::InstanceDesc>(&one, 1));
         };
     });
 

@@ -1,14 +1,17 @@
 // caustics.specularPixels: compacts the camera pixels whose surface is specular into a list and counts
 // the backward grid up (shaders/*/backward_trace/specular_pixels.*; the list is cut at the frame's
 // sphere capacity, the count is not), so that caustics.backward launches once per listed specular pixel, as caustics.forward launches once per emitting texel (docs/caustics.md,
-// "Second-type cost"). It also chooses the frame's sphere TLAS capacity (caustics/sphere_capacity.h) and zeroes
-// the instance slots below it: the ones the backward pass leaves unwritten stay inactive (a zero
-// acceleration-structure reference is an inactive instance in Vulkan and DXR).
+// "Second-type cost"). It also chooses the frame's sphere capacity (caustics/sphere_capacity.h) and zeroes
+// the sphere AABB list: the slots the backward pass leaves unwritten are point boxes at the origin, which
+// the intersection shader refuses by their index. (NaN boxes, inactive by the Vulkan and DXR specs, left
+// lavapipe's BVH without a single hit.)
 #include "caustic_maps/caustic_internal.h"
 
 namespace caustics {
 
 void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
+    f.sphereAabbs = graph.importBuffer("caustics.sphereAabbs", f.res->sphereAabbs, rhi::ResourceState::Common,
+                                       rhi::ResourceState::Common);
     graph.addPass("caustics.specularPixels", [&](rg::PassBuilder& b) {
         rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
         rg::RgTexture optics = b.read(f.in->gbuffer.optics, rg::Access::SampledRead);
@@ -19,18 +22,13 @@ void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
                                    rg::Access::StorageWrite);
         f.backwardArgs = b.write(f.backwardArgs, rg::Access::StorageReadWrite);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
-        f.instances = b.write(b.createBuffer("caustics.sphereInstances",
-                                             rhi::BufferDesc().setByteSize(uint64_t(f.sphereAllocation) * sizeof(rhi::InstanceDesc))
-                                                 .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::AccelStructInput)
-                                                 .setDebugName("caustics.sphereInstances")),
-                              rg::Access::CopyDest);
+        f.sphereAabbs = b.write(f.sphereAabbs, rg::Access::CopyDest);
         CausticFrame h = f;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
             *h.sphereCapacity = chooseSphereCapacity(r, *h.sphereReadback, h.width, h.height, h.sphereAllocation);
             rhi::ICommandList& cmd = ctx.cmd();
-            if (*h.sphereCapacity > 0)
-                cmd.fillBuffer(ctx.buffer(h.instances), 0, 0, uint64_t(*h.sphereCapacity) * sizeof(rhi::InstanceDesc));
+            cmd.fillBuffer(ctx.buffer(h.sphereAabbs), 0);   // every slot the BLAS build reads
             rhi::BindingSetDesc d;
             d.add(rhi::BindingSetItem::sampledTexture(0, ctx.texture(objectId)))
                 .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(optics)))

@@ -1,4 +1,4 @@
-// The sphere TLAS capacity (caustics/sphere_capacity.h): the policy, the per-slot read-back of the sphere count
+// The sphere structure's capacity (caustics/sphere_capacity.h): the policy, the per-slot read-back of the sphere count
 // and the pass that copies it (caustics.sphereCount).
 #include "caustics/sphere_capacity.h"
 
@@ -41,9 +41,9 @@ void prepareSphereBudget(CausticFrame& f) {
         if (buffer) slot.buffer = buffer.value();   // without it every frame builds over its allocation
     }
     f.sphereReadback = &slot;
-    // The slots this frame's sphere list, instances and TLAS build have (ensureSizeResources sized the
-    // TLAS for at least as many).
-    f.sphereAllocation = std::min(f.res->tlasCapacity, f.width * f.height);
+    // The slots this frame's sphere list and AABB list have (ensureSizeResources sized the sphere BLAS
+    // for at least as many).
+    f.sphereAllocation = std::min(f.res->sphereSlots, f.width * f.height);
     f.sphereCapacity = std::make_shared<uint32_t>(f.sphereAllocation);
 }
 

@@ -14,7 +14,7 @@ namespace caustics {
 // Push-constant bytes of the scene-trace passes (the Push structs of forward_trace_pass.cpp and
 // backward_pass.cpp); their state objects are created with exactly these, which binding_truth_tests
 // compare with the shaders' push blocks.
-inline constexpr uint32_t kForwardPushBytes = 32, kBackwardPushBytes = 48;
+inline constexpr uint32_t kForwardPushBytes = 32, kBackwardPushBytes = 40;
 
 // One frame slot's read-back sphere count (kStatSpheres) of the last frame recorded in it, with the
 // size of that frame; the host waited for that frame before executing a graph in the same slot.
@@ -23,6 +23,10 @@ struct SphereCountReadback {
     uint32_t width = 0, height = 0;
     bool recorded = false;      // a frame's copy into it was recorded
 };
+
+// One sphere's AABB in the sphere BLAS (min xyz, max xyz); slots past a frame's sphere count stay zero
+// (backward_trace/specular_pixels_pass.cpp).
+inline constexpr uint32_t kSphereAabbBytes = 24;
 
 struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
@@ -42,16 +46,23 @@ struct CausticResources::Impl {
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
     CausticFilterPipelines filter;   // resolve + filter (caustic_filter/)
-    rhi::BufferHandle sphereAabb;
-    rhi::AccelStructHandle sphereBlas;
-    rhi::AccelStructHandle sphereTlas;
-    uint32_t tlasCapacity = 0;   // instance slots the sphere TLAS is allocated for (caustics/sphere_capacity.h)
+    // The spheres' acceleration structure (docs/caustics.md, "Memory"): one AABB per sphere, written by
+    // caustics.backward, in a bottom level rebuilt every frame under a top level of one instance. A top
+    // level of one instance per sphere cost ~170 bytes a sphere; AABB leaves cost far less.
+    rhi::BufferHandle sphereAabbs;       // VkAabbPositionsKHR / D3D12_RAYTRACING_AABB per slot (24 bytes)
+    rhi::AccelStructHandle sphereBlas;   // over sphereAabbs
+    rhi::AccelStructHandle sphereTlas;   // one instance of sphereBlas
+    uint32_t sphereSlots = 0;   // AABB slots sphereAabbs and sphereBlas are allocated for (caustics/sphere_capacity.h)
     // The largest capacity a frame asked for past its allocation (set when a graph executes); the next
     // ensureSizeResources grows the allocation to it.
     uint32_t sphereAllocationWanted = 0;
-    // Sphere TLASes replaced by a larger one, per frame slot: kept until that slot comes round again,
-    // when the frames that may still trace them have finished (as frameSets).
-    std::vector<std::vector<rhi::AccelStructHandle>> retiredSphereTlas;
+    // Sphere AABB lists and BLASes replaced by larger ones, per frame slot: kept until that slot comes
+    // round again, when the frames that may still trace them have finished (as frameSets).
+    struct RetiredSphereStructure {
+        rhi::BufferHandle aabbs;
+        rhi::AccelStructHandle blas;
+    };
+    std::vector<std::vector<RetiredSphereStructure>> retiredSphereStructures;
     // Sphere counts read back per view (keyed by its history) and frame slot (backward_trace/caustics/sphere_capacity.h).
     std::map<uint64_t, std::vector<SphereCountReadback>> sphereCounts;   // by CausticViewHistory::viewId
     CausticViewHistory ownHistory;   // used when CausticFrameInputs::history is null
@@ -78,19 +89,19 @@ struct CausticFrame {
     // (wideFixedPoint) or one uint, holding value x fixedPointScale.
     bool wideFixedPoint = false;
     float fixedPointScale = kFixedPointScale;
-    rg::RgBuffer camera, maps, radiance1, radiance2, hits, stats, spheres, instances;
+    rg::RgBuffer camera, maps, radiance1, radiance2, hits, stats, spheres, sphereAabbs;
     rg::RgBuffer emitters, forwardArgs;   // caustics.emitters -> caustics.photonPlan -> caustics.forward
     rg::RgBuffer layerPlans, owners;      // CausticLayerPlanGpu per layer; CausticMapPlan::instanceLayers
     rg::RgBuffer specularPixels, backwardArgs;   // caustics.specularPixels -> caustics.backward
-    // The sphere TLAS capacity of this frame, chosen when the graph executes (caustics/sphere_capacity.h).
+    // The sphere capacity of this frame, chosen when the graph executes (caustics/sphere_capacity.h).
     std::shared_ptr<uint32_t> sphereCapacity;
-    uint32_t sphereAllocation = 0;   // slots of this frame's sphere list and instance buffer
+    uint32_t sphereAllocation = 0;   // slots of this frame's sphere list and AABB buffer
     // Records of caustics.hits: maxStoredHits, at most the forward pass's launches (one hit each; 0
     // without the second type, which alone reads them).
     uint32_t hitCapacity = 0;
     SphereCountReadback* sphereReadback = nullptr;   // this view's and slot's
     rg::RgTexture mapIds, mapDepth;
-    rg::RgAccelStruct sphereTlas;
+    rg::RgAccelStruct sphereBlas, sphereTlas;
     CausticMapPlan plan;
     // The buffer the second type accumulates into: its own, or the first type's (one for both).
     rg::RgBuffer& secondTypeTarget() { return separateTypes ? radiance2 : radiance1; }

@@ -6,7 +6,7 @@ namespace caustics {
 void appendCausticMemory(CausticResources& resources, std::vector<MemoryEntry>& out) {
     CausticResources::Impl* r = resources.impl();
     if (!r) return;
-    addMemoryEntry(out, "caustics.sphere_aabb", r->sphereAabb);
+    addMemoryEntry(out, "caustics.sphere_aabbs", r->sphereAabbs);
     addMemoryEntry(out, "caustics.sphere_blas", r->sphereBlas);
     addMemoryEntry(out, "caustics.sphere_tlas", r->sphereTlas);
     // One 4-byte readback per view and frame slot (sphere_capacity.h): summed, with their count.

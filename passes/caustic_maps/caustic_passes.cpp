@@ -84,8 +84,8 @@ uint64_t forwardLaunchBound(const CausticsSettings& s, const CausticMapPlan& pla
 
 // Refuses settings the device cannot run, naming the setting, before anything is allocated.
 // 2^30 is the smallest maxRayDispatchInvocationCount Vulkan allows and D3D12's DispatchRays limit;
-// every sphere of the second type is one TLAS instance, so the first sphere allocation
-// (caustics/sphere_capacity.h) must fit maxInstanceCount (growth stops at it).
+// every sphere of the second type is one AABB of the sphere BLAS, so the first sphere allocation
+// (caustics/sphere_capacity.h) must fit maxPrimitiveCount (growth stops at it).
 Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& plan, uint32_t firstSphereAllocation) {
     constexpr uint64_t kMaxRayLaunches = 1ull << 30;
     const uint64_t launches = forwardLaunchBound(in.settings, plan);
@@ -98,12 +98,12 @@ Status checkDeviceLimits(const CausticFrameInputs& in, const CausticMapPlan& pla
                          "photonsPerFrame");
     const uint64_t pixels = uint64_t(in.gbuffer.width) * in.gbuffer.height;
     const uint64_t slots = pixels > UINT32_MAX ? pixels : firstSphereAllocation;
-    const uint64_t maxInstances = in.device ? in.device->capabilities().maxInstanceCount : 0;
-    if (in.settings.secondType && maxInstances != 0 && slots > maxInstances)
+    const uint64_t maxPrimitives = in.device ? in.device->capabilities().maxPrimitiveCount : 0;
+    if (in.settings.secondType && maxPrimitives != 0 && slots > maxPrimitives)
         return makeError("addCausticPasses: secondType's first sphere allocation (the specular surfaces in view) at " +
                          std::to_string(in.gbuffer.width) + "x" + std::to_string(in.gbuffer.height) + " is " +
-                         std::to_string(slots) + " instances, over the device's maxInstanceCount " +
-                         std::to_string(maxInstances) + "; lower the resolution or turn secondType off");
+                         std::to_string(slots) + " spheres, over the device's maxPrimitiveCount " +
+                         std::to_string(maxPrimitives) + "; lower the resolution or turn secondType off");
     return okStatus();
 }
 
@@ -139,7 +139,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
                          std::to_string(res->frameSets.size()));
     res->frameSlot = slot;
     res->frameSets[res->frameSlot].clear();
-    res->retiredSphereTlas[res->frameSlot].clear();
+    res->retiredSphereStructures[res->frameSlot].clear();
     if (in.settings.secondType) CAUSTICS_CHECK(res->ensureSizeResources(pixels, firstSphereAllocation, res->frameSlot));
     CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
     if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));

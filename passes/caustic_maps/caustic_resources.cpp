@@ -77,7 +77,7 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     Impl& m = *r.impl_;
     m.device = &d;
     m.frameSets.resize(framesInFlight);
-    m.retiredSphereTlas.resize(framesInFlight);
+    m.retiredSphereStructures.resize(framesInFlight);
     m.floatAtomics = d.capabilities().shaderFloatAtomicAdd;
     m.int64Atomics = d.capabilities().shaderBufferInt64Atomics;
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
@@ -117,23 +117,13 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     CAUSTICS_TRY(m.gatherState, d.createStateObject(g));
     CAUSTICS_TRY(m.gatherTable, d.createShaderTable(rhi::ShaderTableDesc{m.gatherState}.setRayGen("rayGen").addMiss("miss").addHitGroup("spheres")));
 
-    // One unit-sphere AABB; NoDuplicateAnyHit because the any-hit shader accumulates (docs/caustics.md, "Second type").
-    const float aabb[6] = {-1, -1, -1, 1, 1, 1};
-    CAUSTICS_TRY(m.sphereAabb, d.createBuffer(rhi::BufferDesc().setByteSize(sizeof(aabb))
-                                                  .setUsage(rhi::BufferUsage::AccelStructInput)
-                                                  .setMemory(rhi::MemoryType::Upload).setDebugName("caustics.sphereAabb")));
-    std::memcpy(m.sphereAabb->mappedData(), aabb, sizeof(aabb));
-    rhi::AccelStructDesc blas;
-    blas.geometries.push_back(rhi::GeometryDesc::fromAabbs({m.sphereAabb, 0, 1, 24}, rhi::GeometryFlags::NoDuplicateAnyHit));
-    blas.debugName = "caustics.sphereBlas";
-    CAUSTICS_TRY(m.sphereBlas, d.createAccelStruct(blas));
-    CAUSTICS_TRY(auto cmd, d.createCommandList());
-    cmd->begin();
-    cmd->buildBottomLevel(m.sphereBlas);
-    cmd->barrier(rhi::AccelStructBarrier{m.sphereBlas, rhi::ResourceState::AccelStructWrite, rhi::ResourceState::AccelStructRead});
-    cmd->end();
-    CAUSTICS_TRY(uint64_t fence, d.submit(cmd));
-    CAUSTICS_CHECK(d.waitForFence(fence));
+    // The top level over the spheres' bottom level: one instance, rebuilt after it every frame.
+    rhi::AccelStructDesc tlas;
+    tlas.isTopLevel = true;
+    tlas.maxInstances = 1;
+    tlas.flags = rhi::AccelBuildFlags::PreferFastBuild;
+    tlas.debugName = "caustics.sphereTlas";
+    CAUSTICS_TRY(m.sphereTlas, d.createAccelStruct(tlas));
     return r;
 }
 
@@ -166,23 +156,28 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
 
 Status CausticResources::Impl::ensureSizeResources(uint32_t pixels, uint32_t initialAllocation, uint32_t slot) {
     rhi::IDevice& d = *device;
-    // Slots by the specular surfaces in view and the counts (caustics/sphere_capacity.h), not one instance
-    // per pixel: 2.07 M instances at 1080p were the largest persistent allocation (docs/caustics.md, "Memory").
-    const uint32_t maxInstances = d.capabilities().maxInstanceCount;
-    uint32_t target = grownSphereAllocation(tlasCapacity, sphereAllocationWanted, initialAllocation, pixels);
-    if (maxInstances != 0) target = std::max(tlasCapacity, std::min(target, maxInstances));   // checkDeviceLimits
+    // Slots by the specular surfaces in view and the counts (caustics/sphere_capacity.h), not one per
+    // pixel: 2.07 M slots at 1080p were the largest persistent allocation (docs/caustics.md, "Memory").
+    const uint64_t maxPrimitives = d.capabilities().maxPrimitiveCount;
+    uint32_t target = grownSphereAllocation(sphereSlots, sphereAllocationWanted, initialAllocation, pixels);
+    if (maxPrimitives != 0) target = std::max<uint32_t>(sphereSlots, uint32_t(std::min<uint64_t>(target, maxPrimitives)));   // checkDeviceLimits
     sphereAllocationWanted = 0;
-    if (!sphereTlas || target > tlasCapacity) {
-        rhi::AccelStructDesc tlas;
-        tlas.isTopLevel = true;
-        tlas.maxInstances = target;
-        tlas.flags = rhi::AccelBuildFlags::PreferFastBuild;   // rebuilt every frame
-        tlas.debugName = "caustics.sphereTlas";
-        CAUSTICS_TRY(rhi::AccelStructHandle grown, d.createAccelStruct(tlas));
-        if (sphereTlas) retiredSphereTlas[slot].push_back(std::move(sphereTlas));
-        sphereTlas = std::move(grown);
-        tlasCapacity = target;
-    }
+    if (sphereBlas && target <= sphereSlots) return okStatus();
+    CAUSTICS_TRY(rhi::BufferHandle aabbs,
+                 d.createBuffer(rhi::BufferDesc().setByteSize(uint64_t(std::max(target, 1u)) * kSphereAabbBytes)
+                                    .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::AccelStructInput | rhi::BufferUsage::CopyDest)
+                                    .setDebugName("caustics.sphereAabbs")));
+    rhi::AccelStructDesc blas;
+    // NoDuplicateAnyHit: the any-hit shader accumulates (docs/caustics.md, "Second type").
+    blas.geometries.push_back(rhi::GeometryDesc::fromAabbs({aabbs, 0, std::max(target, 1u), kSphereAabbBytes},
+                                                           rhi::GeometryFlags::NoDuplicateAnyHit));
+    blas.flags = rhi::AccelBuildFlags::PreferFastBuild;   // rebuilt every frame
+    blas.debugName = "caustics.sphereBlas";
+    CAUSTICS_TRY(rhi::AccelStructHandle grown, d.createAccelStruct(blas));
+    if (sphereBlas) retiredSphereStructures[slot].push_back({std::move(sphereAabbs), std::move(sphereBlas)});
+    sphereAabbs = std::move(aabbs);
+    sphereBlas = std::move(grown);
+    sphereSlots = target;
     return okStatus();
 }
 

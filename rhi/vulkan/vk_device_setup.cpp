@@ -62,6 +62,7 @@ Status finishDeviceSetup(VulkanContext& context, const EnabledDeviceParts& parts
     }
     if (parts.accelStruct) {
         caps.maxInstanceCount = uint32_t(std::min<uint64_t>(context.accelStructProperties.maxInstanceCount, UINT32_MAX));
+        caps.maxPrimitiveCount = context.accelStructProperties.maxPrimitiveCount;
         caps.minAccelStructScratchAlignment = context.accelStructProperties.minAccelerationStructureScratchOffsetAlignment;
     }
     caps.timestampPeriodNs = props.properties.limits.timestampPeriod;

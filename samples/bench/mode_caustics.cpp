@@ -22,7 +22,7 @@ void printCounters(const Measurement& m) {
                 (unsigned long long)m.photons, (unsigned long long)m.segments, (unsigned long long)m.emitterTexels,
                 (unsigned long long)m.dispatchedTexels,
                 m.dispatchedTexels ? 100.0 * double(m.emitterTexels) / double(m.dispatchedTexels) : 0.0);
-    std::printf("  specular pixels %llu, backward launches %llu, spheres %llu (dropped %llu), sphere TLAS capacity %llu\n",
+    std::printf("  specular pixels %llu, backward launches %llu, spheres %llu (dropped %llu), sphere capacity %llu\n",
                 (unsigned long long)m.specularPixels, (unsigned long long)m.backwardLaunches,
                 (unsigned long long)m.spheres, (unsigned long long)m.spheresDropped, (unsigned long long)m.sphereCapacity);
     std::printf("  stored hits %llu (offered %llu%s), gather pairs %llu\n", (unsigned long long)m.storedHits,

@@ -82,7 +82,7 @@ public:
                  << ',' << m.causticsMs << ',' << m.passTime("caustics.maps") << ',' << m.passTime("caustics.emitters")
                  << ',' << m.passTime("caustics.forward") << ','
                  << m.passTime("caustics.backward") + m.passTime("caustics.specularPixels") << ','
-                 << m.passTime("caustics.spheres") + m.passTime("caustics.sphereCount") << ','
+                 << m.passTime("caustics.sphereBlas") + m.passTime("caustics.spheres") + m.passTime("caustics.sphereCount") << ','
                  << m.passTime("caustics.gather") << ','
                  << m.passTime("caustics.temporal") + m.passTime("caustics.atrous") + m.passTime("caustics.history")
                  << ',' << m.photons << ',' << m.emitterTexels << ',' << m.dispatchedTexels << ',' << m.segments << ','

@@ -55,7 +55,7 @@ inline constexpr uint32_t kStatGatherLaunches = kStatForwardSegments + 3;
 inline constexpr uint32_t kStatAccumulationGiveUps = kStatForwardSegments + 4;
 // Second-type cost (docs/caustics.md, "Second-type cost"): specular camera pixels (the backward pass's
 // launches when dispatched indirectly), launches of the backward dispatch, spheres that found no slot
-// below the sphere TLAS capacity (kStatSpheres counts them too), and that capacity (instances built).
+// below the sphere capacity (kStatSpheres counts them too), and that capacity (AABB slots built).
 inline constexpr uint32_t kStatSpecularPixels = kStatForwardSegments + 5;
 inline constexpr uint32_t kStatBackwardLaunches = kStatForwardSegments + 6;
 inline constexpr uint32_t kStatSpheresDropped = kStatForwardSegments + 7;

@@ -1,7 +1,7 @@
 // Backward pass (paper 3.3, Figure 5; mirror of shaders/vulkan/backward_trace/backward.rgen): from
 // every camera pixel of caustics.specularPixels' list, trace the specular chain to the first diffuse
-// hit; that hit becomes an integration sphere, appended with its sphere TLAS instance at the next slot
-// of a counter (slots past the TLAS capacity are dropped and counted). The pixel's ray differentials
+// hit; that hit becomes an integration sphere, appended with its AABB in the sphere BLAS at the next
+// slot of a counter (slots past the capacity are dropped and counted). The pixel's ray differentials
 // (Igehy 1999) follow the chain, so the sphere's radius is the pixel's real footprint on the receiver
 // (docs/caustics.md).
 #include "scene/scene.hlsli"
@@ -16,7 +16,7 @@
 struct CameraBlock { CameraConstants camera; };
 ConstantBuffer<CameraBlock> cameraBlock : register(b0, space1);
 RWByteAddressBuffer spheres : register(u3, space1);
-RWByteAddressBuffer instances : register(u4, space1);   // caustics::rhi::InstanceDesc, 64 bytes
+RWByteAddressBuffer sphereAabbs : register(u4, space1);   // D3D12_RAYTRACING_AABB per slot, 24 bytes
 RWByteAddressBuffer stats : register(u5, space1);
 ByteAddressBuffer specularPixels : register(t6, space1);
 
@@ -26,13 +26,11 @@ struct Push {
     float worldRadius;
     uint maxDepth;
     uint frame;
-    uint blasLo;
-    uint blasHi;
     float minMagnification;   // footprint width clamp, relative to the unfolded pixel width
     float maxMagnification;
     float minRadius;          // metres
     float maxRadius;          // metres
-    uint sphereCapacity;      // instances of the sphere TLAS build (caustics.spheres)
+    uint sphereCapacity;      // AABB slots of the sphere BLAS build (caustics.sphereBlas)
 };
 ConstantBuffer<Push> pc : register(b0, space999);
 
@@ -45,14 +43,12 @@ void writeSphere(uint slot, uint pixel, float3 centre, float radius, float3 tran
     spheres.Store4(o + 48u, uint4(asuint(outgoing), 0u));
 }
 
-// Row-major 3x4 transform (scale r, translate c), id/mask, SBT offset/flags, BLAS address.
-// The custom index is the slot, as the instance index.
-void writeInstance(uint slot, float3 c, float r) {
-    uint o = 64u * slot;
-    instances.Store4(o, asuint(float4(r, 0.0f, 0.0f, c.x)));
-    instances.Store4(o + 16u, asuint(float4(0.0f, r, 0.0f, c.y)));
-    instances.Store4(o + 32u, asuint(float4(0.0f, 0.0f, r, c.z)));
-    instances.Store4(o + 48u, uint4((slot & 0xFFFFFFu) | (0xFFu << 24), 0u, pc.blasLo, pc.blasHi));
+// The gather disk lies inside the radius-ball: its box (min xyz, max xyz) bounds every point the
+// any-hit accepts; the primitive index is the slot.
+void writeSphereAabb(uint slot, float3 c, float r) {
+    uint o = 24u * slot;
+    sphereAabbs.Store3(o, asuint(c - r));
+    sphereAabbs.Store3(o + 12u, asuint(c + r));
 }
 
 TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
@@ -157,7 +153,7 @@ void main() {
             return;
         }
         writeSphere(slot, pixel, x, radius, throughput, h.objectId, nFacing, -dir);
-        writeInstance(slot, x, radius);
+        writeSphereAabb(slot, x, radius);
         return;
     }
 }

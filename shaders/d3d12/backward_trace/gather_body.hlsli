@@ -13,7 +13,7 @@ RWByteAddressBuffer stats : register(u3, space0);
 
 [shader("anyhit")]
 void main(inout GatherPayload payload, in SphereAttributes attribs) {
-    CausticSphere s = loadCausticSphere(spheres, InstanceIndex());
+    CausticSphere s = loadCausticSphere(spheres, PrimitiveIndex());
     CausticHit h = loadCausticHit(hits, payload.hitIndex);
     if (h.objectId == s.objectId && dot(h.normal, s.normal) > 0.0f) {
         addRadiance(s.pixel, causticHitReflectedFlux(h, s.outgoing) * s.transmittance / (kPi * s.radius * s.radius));

@@ -12,7 +12,7 @@ layout(set = 0, binding = 3, std430) buffer Stats { uint stats[]; };
 #include "forward_trace/radiance_atomics.glsl"
 layout(location = 0) rayPayloadInEXT uint hitIndex;
 void main() {
-    CausticSphere s = spheres[gl_InstanceID];
+    CausticSphere s = spheres[gl_PrimitiveID];
     CausticHit h = unpackCausticHit(hits[hitIndex]);
     if (h.objectId == s.objectId && dot(h.normal, s.normal) > 0.0) {
         addRadiance(s.pixel, causticHitReflectedFlux(h, s.outgoing) * s.transmittance / (kPi * s.radius * s.radius));

@@ -48,6 +48,7 @@ struct Capabilities {
     uint32_t maxShaderGroupStride = 4096;
     uint32_t maxRayRecursionDepth = 1;
     uint32_t maxInstanceCount = 0;
+    uint64_t maxPrimitiveCount = 0;      // triangles or AABBs in one bottom level (0 = unknown)
     double timestampPeriodNs = 1.0;      // nanoseconds per timestamp tick
     uint64_t minAccelStructScratchAlignment = 256;
     // Limits a host checks before sizing its frame (0 = unknown): texture width/height, the largest
