@@ -11,9 +11,9 @@
 namespace caustics {
 
 struct CausticFilterPipelines {
-    rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout,
-        atrousWeightsLayout, atrousLayout, outputLayout;
-    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousWeights, atrous, atrousLast, output;
+    rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout, atrousLayout,
+        atrousLastLayout, outputLayout;
+    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrous, atrousLast, output;
 
     static Result<CausticFilterPipelines> create(rhi::IDevice& device);
 };

@@ -6,6 +6,8 @@
 
 #include "caustic_filter/caustic_filter.h"
 #include "caustic_maps/caustic_internal.h"
+#include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics::filter {
 
@@ -62,6 +64,20 @@ bool dispatchTiles(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::C
     if (!bindFilter(ctx, r, pipeline, layout, std::move(bindings), push)) return false;
     ctx.cmd().dispatchIndirect(ctx.buffer(args));
     return true;
+}
+
+// dispatchTiles with a set filled by name from the pass's one declaration (docs/shaders.md, "Bindings");
+// a name or kind that does not match it is logged and nothing is dispatched.
+template <typename Push>
+bool dispatchDeclared(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::ComputePipelineHandle& pipeline,
+                      const rhi::BindingLayoutHandle& layout, const PassBindingSet& bindings, const Push& push,
+                      rg::RgBuffer args) {
+    auto desc = bindings.desc();
+    if (!desc) {
+        log(LogLevel::Error, "caustic filter: " + desc.message());
+        return false;
+    }
+    return dispatchTiles(ctx, r, pipeline, layout, std::move(*desc), push, args);
 }
 
 // The view's ping-ponged history (caustic_passes.h): last frame's (read) and this frame's (written).

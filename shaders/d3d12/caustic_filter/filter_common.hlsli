@@ -2,6 +2,7 @@
 #define CAUSTICS_CAUSTIC_FILTER_COMMON_HLSLI
 // Helpers shared by the caustic filter's compute shaders (mirror of shaders/vulkan/caustic_filter/
 // filter_common.glsl; docs/caustics.md, "Filter").
+#include "common/octahedral.h"
 
 // Rec. 709 luminance: the scalar whose moments and differences guide the filter (SVGF section 4.2).
 float filterLuminance(float3 c) { return dot(c, float3(0.2126f, 0.7152f, 0.0722f)); }
@@ -67,9 +68,6 @@ float4 filterNearestHalf(float4 v) {
 float2 filterUnpackHalf2(uint bits) { return float2(f16tof32(bits & 0xFFFFu), f16tof32(bits >> 16)); }
 uint filterPackHalf2(float2 v) { return f32tof16(v.x) | (f32tof16(v.y) << 16); }
 
-// B3-spline a-trous kernel taps for |offset| = 0, 1, 2 (1/16 (1 4 6 4 1)).
-static const float kFilterKernel[3] = {3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};
-
 // Relative linear-depth tolerance for a reprojected history tap up to one pixel away: 1 % plus the
 // depth change across two pixel footprints on a surface seen at the given angle.
 float filterRelativeDepthTolerance(float tanHalfFovY, float imageHeight, float3 normal, float3 toEye) {
@@ -78,18 +76,11 @@ float filterRelativeDepthTolerance(float tanHalfFovY, float imageHeight, float3 
     return 0.01f + 2.0f * (2.0f * tanHalfFovY / imageHeight) * tanView;
 }
 
-// Weight with which source pixel q spreads its radiance to pixel p = q + offset in one a-trous
-// iteration (SVGF's edge-stopping functions with a Gaussian luminance term; the formulas, why the
-// luminance term uses Var_q + Var_p and why it is Gaussian are in filter_common.glsl).
-float filterSpreadWeight(int2 offset, int stepWidth, float zq, float zp, float2 gradZq, float3 nq, float3 np,
-                         float lq, float lp, float varianceQ, float varianceP, float sigmaLuminance) {
-    int2 k = abs(offset) / stepWidth;
-    float planar = dot(gradZq, float2(offset));
-    float wz = exp(-abs(zp - zq - planar) / (abs(planar) + 0.002f * zq * float(stepWidth)));
-    float wn = pow(max(0.0f, dot(nq, np)), 128.0f);
-    float d = abs(lp - lq) / (sigmaLuminance * sqrt(varianceQ + varianceP) + 1e-20f);
-    float wl = exp(-0.5f * d * d);
-    return kFilterKernel[k.x] * kFilterKernel[k.y] * wz * wn * wl;
+// The a-trous passes' packed guide (filter_common.glsl says what each word holds).
+uint4 filterPackAtrousGuide(float depth, float3 n, uint id, float2 gradZ) {
+    float2 e = dot(abs(n), float3(1.0f, 1.0f, 1.0f)) > 0.0f ? octEncode(n) : float2(0.0f, 0.0f);
+    uint2 q = uint2(round(saturate(e * 0.5f + 0.5f) * 65535.0f));
+    return uint4(asuint(depth), q.x | (q.y << 16), id, filterPackHalf2(gradZ));
 }
 
 #endif

@@ -3,7 +3,7 @@
 // depth, normal), blended with weight 1/n, n = history length capped at maxHistory. prevViewProj is
 // Vulkan's clip (y down) and is used as such: no rasterizer here. Dispatched over the tile list; a
 // history texel exists only where last frame's slot map gave its tile a pool tile. Reads last frame's
-// ping-ponged pool, writes this frame's (pre-exposed half precision) and the depth gradient.
+// ping-ponged pool, writes this frame's (pre-exposed half precision) and the a-trous passes' packed guide.
 #include "scene/camera.hlsli"
 #include "caustic_filter/filter_common.hlsli"
 struct CameraBlock { CameraConstants camera; };
@@ -18,7 +18,7 @@ Texture2D<uint> previousSlots : register(t7, space0);
 ByteAddressBuffer tiles : register(t8, space0);
 RWTexture2D<float4> outColor : register(u9, space0);
 RWTexture2D<uint2> outGuides : register(u10, space0);
-RWTexture2D<uint> outGradient : register(u11, space0);
+RWTexture2D<uint4> outFilterGuide : register(u11, space0);   // the a-trous guide, pool
 struct Push { uint historyValid; float maxHistory; float preExposure; float historyScale; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
@@ -136,5 +136,5 @@ void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
     float lm = filterLuminance(color);
     outColor[pool] = filterNearestHalf(float4(color, sqrt(max(0.0f, moment2 - lm * lm))));
     outGuides[pool] = filterPackGuide(depth, historyLength, n, objectId);
-    outGradient[pool] = filterPackHalf2(gradZ);
+    outFilterGuide[pool] = filterPackAtrousGuide(depth, n, objectId, gradZ);
 }

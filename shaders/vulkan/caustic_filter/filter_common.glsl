@@ -2,6 +2,7 @@
 #define CAUSTICS_CAUSTIC_FILTER_COMMON_GLSL
 // Helpers shared by the caustic filter's compute shaders (docs/caustics.md, "Filter"); HLSL twin in
 // shaders/d3d12/caustic_filter/filter_common.hlsli.
+#include "common/octahedral.h"
 
 // Rec. 709 luminance: the scalar whose moments and differences guide the filter (SVGF section 4.2).
 float filterLuminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
@@ -72,9 +73,6 @@ vec4 filterNearestHalf(vec4 v) {
     return vec4(filterNearestHalf(v.x), filterNearestHalf(v.y), filterNearestHalf(v.z), filterNearestHalf(v.w));
 }
 
-// B3-spline a-trous kernel taps for |offset| = 0, 1, 2 (1/16 (1 4 6 4 1)).
-const float kFilterKernel[3] = float[](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
-
 // Relative linear-depth tolerance for a reprojected history tap up to one pixel away: 1 % plus the
 // depth change across two pixel footprints on a surface seen at the given angle (the same footprint
 // argument as the first-type splat's depth test, docs/caustics.md "Forward trace").
@@ -84,26 +82,14 @@ float filterRelativeDepthTolerance(float tanHalfFovY, float imageHeight, vec3 no
     return 0.01 + 2.0 * (2.0 * tanHalfFovY / imageHeight) * tanView;
 }
 
-// Weight with which source pixel q spreads its radiance to pixel p = q + offset in one a-trous
-// iteration (SVGF's edge-stopping functions, Schied et al. 2017, eq. 3-5, with a Gaussian luminance term):
-//   w_z = exp(-|z_p - z_q - grad z_q . offset| / (|grad z_q . offset| + 0.002 z_q step))   (a plane passes)
-//   w_n = max(0, n_q . n_p)^128
-//   w_l = exp(-d^2 / 2),  d = |l_p - l_q| / (sigma_l sqrt(Var_q + Var_p))
-// times the B3 kernel; the caller checks the object id. The luminance term uses the variance of the
-// difference, so it is symmetric in p and q: no net flow between two pixels whose difference is noise
-// (a one-sided scale drains a focal spot's shoulders into the darker plateau around it). Gaussian, not
-// SVGF's exp(-d): a difference of one deviation keeps 0.61 of the weight (noise is averaged), one of
-// three keeps 0.011 (a fold line or a cusp stops the spreading); exp(-d) keeps 0.37 and 0.05, which
-// blurred the ring's cusp to 0.82 of its peak in one frame (docs/caustics.md "Filter").
-float filterSpreadWeight(ivec2 offset, int stepWidth, float zq, float zp, vec2 gradZq, vec3 nq, vec3 np, float lq,
-                         float lp, float varianceQ, float varianceP, float sigmaLuminance) {
-    ivec2 k = abs(offset) / stepWidth;
-    float planar = dot(gradZq, vec2(offset));
-    float wz = exp(-abs(zp - zq - planar) / (abs(planar) + 0.002 * zq * float(stepWidth)));
-    float wn = pow(max(0.0, dot(nq, np)), 128.0);
-    float d = abs(lp - lq) / (sigmaLuminance * sqrt(varianceQ + varianceP) + 1e-20);
-    float wl = exp(-0.5 * d * d);
-    return kFilterKernel[k.x] * kFilterKernel[k.y] * wz * wn * wl;
+// The a-trous passes' guide of a pool texel, packed once per frame by caustics.temporal (docs/caustics.md
+// "Filter", "Cost"): x the linear depth (32-bit float bits), y the normal as octahedral 2 x unorm16
+// (angular error below 1e-4 rad), z the object id, w the depth slope (2 x half). Unpacked by
+// passes/caustic_filter/shaders/atrous.h (atrousUnpackGuide).
+uvec4 filterPackAtrousGuide(float depth, vec3 n, uint id, vec2 gradZ) {
+    vec2 e = dot(abs(n), vec3(1.0)) > 0.0 ? octEncode(n) : vec2(0.0);
+    uvec2 q = uvec2(round(clamp(e * 0.5 + 0.5, 0.0, 1.0) * 65535.0));
+    return uvec4(floatBitsToUint(depth), q.x | (q.y << 16), id, packHalf2x16(gradZ));
 }
 
 #endif

@@ -11,8 +11,8 @@
 // contradict (historyRejected: the caustic moved) is dropped. Dispatched over the tile list (tiles.comp):
 // a history texel exists only where last frame's slot map gave its tile a pool tile. The history is
 // ping-ponged (docs/caustics.md "Filter", "History"): this pass reads last frame's pool and writes this
-// frame's (the result, before any spatial pass, and its guides), so no copy pass follows; and the depth
-// gradient the a-trous passes use, once per frame. Everything in the pool is pre-exposed half precision.
+// frame's (the result, before any spatial pass, and its guides), so no copy pass follows; and, once per
+// frame, the a-trous passes' packed guide (depth, normal, object id, depth gradient in one texel). Everything in the pool is pre-exposed half precision.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "scene/camera.glsl"
 #include "caustic_filter/filter_common.glsl"
@@ -29,7 +29,7 @@ layout(set = 0, binding = 7) uniform utexture2D previousSlots;   // last frame's
 layout(set = 0, binding = 8, std430) readonly buffer TileList { uint tiles[]; };
 layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D outColor;     // this frame's, pool
 layout(set = 0, binding = 10, rg32ui) uniform writeonly uimage2D outGuides;   // this frame's, pool
-layout(set = 0, binding = 11, r32ui) uniform writeonly uimage2D outGradient;  // half2 depth slope, pool
+layout(set = 0, binding = 11, rgba32ui) uniform writeonly uimage2D outFilterGuide;  // the a-trous guide, pool
 // preExposure: this frame's (the host's exposure, docs/caustics.md "Filter", "Memory"); historyScale:
 // this frame's over last frame's, which the history was stored with.
 layout(push_constant) uniform Push { uint historyValid; float maxHistory; float preExposure; float historyScale; } pc;
@@ -159,5 +159,5 @@ void main() {
     vec2 gradZ = vec2(depthSlope(p, ivec2(1, 0), size, depth, id), depthSlope(p, ivec2(0, 1), size, depth, id));
     imageStore(outColor, pool, filterNearestHalf(vec4(color, deviation)));
     imageStore(outGuides, pool, uvec4(filterPackGuide(depth, historyLength, n, id), 0u, 0u));
-    imageStore(outGradient, pool, uvec4(packHalf2x16(gradZ)));
+    imageStore(outFilterGuide, pool, filterPackAtrousGuide(depth, n, id, gradZ));
 }
