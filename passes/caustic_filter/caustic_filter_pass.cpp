@@ -22,6 +22,8 @@
 #include "caustic_filter/resolve_bindings.h"
 #include "caustic_filter/shaders/output.h"
 #include "caustic_filter/shaders/resolve.h"
+#include "caustic_filter/shaders/temporal.h"
+#include "caustic_filter/temporal_bindings.h"
 #include "caustic_filter/shaders/variance.h"
 #include "caustic_filter/variance_bindings.h"
 
@@ -125,21 +127,29 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         FilterTiles t = ff.tiles;
         rg::RgTexture guide = ff.guide;
         const float pre = ff.preExposure;
-        struct { uint32_t historyValid; float maxHistory, preExposure, historyScale; } built{
-            historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f};
+        const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f};
         return [=](rg::PassContext& ctx) {
             // Only if the last EXECUTED frame wrote the copy this one reads (a dropped graph breaks it),
             // with the pre-exposure that frame stored it with.
             auto push = built;
             push.historyValid &= (fr.history->valid && fr.history->parity == readCopy) ? 1u : 0u;
             push.historyScale = pre / fr.history->preExposure[readCopy];
-            rhi::BindingSetDesc d = textureBindings(ctx, 1, {in[0], in[1], in[2], in[3], in[4], in[5], in[6]}, {});
-            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(fr.camera)))
-                .add(rhi::BindingSetItem::storageBuffer(8, ctx.buffer(t.list), false))
-                .add(rhi::BindingSetItem::storageTexture(9, ctx.texture(o.color)))
-                .add(rhi::BindingSetItem::storageTexture(10, ctx.texture(o.guides)))
-                .add(rhi::BindingSetItem::storageTexture(11, ctx.texture(guide)));
-            if (dispatchTiles(ctx, *fr.res, fr.res->filter.temporal, fr.res->filter.temporalLayout, d, push, t.args)) {
+            const bool recorded = dispatchDeclared(ctx, *fr.res, fr.res->filter.temporal, fr.res->filter.temporalLayout,
+                                                   PassBindingSet(shader_bindings::kCausticTemporalBindings, 0)
+                                                       .buffer("camera", ctx.buffer(fr.camera))
+                                                       .texture("current", ctx.texture(in[0]))
+                                                       .texture("gLinearDepth", ctx.texture(in[1]))
+                                                       .texture("gNormal", ctx.texture(in[2]))
+                                                       .texture("gObjectId", ctx.texture(in[3]))
+                                                       .texture("historyColor", ctx.texture(in[4]))
+                                                       .texture("historyGuides", ctx.texture(in[5]))
+                                                       .texture("previousSlots", ctx.texture(in[6]))
+                                                       .buffer("tiles", ctx.buffer(t.list))
+                                                       .texture("outColor", ctx.texture(o.color))
+                                                       .texture("outGuides", ctx.texture(o.guides))
+                                                       .texture("outFilterGuide", ctx.texture(guide)),
+                                                   push, t.args);
+            if (recorded) {
                 // Committed when recorded, not when the graph was built: this frame's copy is the next
                 // frame's previous one.
                 fr.history->valid = true;

@@ -1,7 +1,6 @@
 #pragma once
 // Graph helpers shared by the caustic filter's passes (caustic_filter_pass.cpp, filter_tile_passes.cpp;
 // docs/caustics.md "Filter", "Tiles", "Memory").
-#include <initializer_list>
 #include <utility>
 
 #include "caustic_filter/caustic_filter.h"
@@ -22,16 +21,6 @@ inline rhi::TextureDesc screenImageDesc(uint32_t w, uint32_t h, const char* name
 inline rhi::TextureDesc poolImageDesc(uint32_t poolTiles, rhi::Format format, const char* name) {
     return rhi::TextureDesc().setSize(filterPoolWidth(), filterPoolHeight(poolTiles)).setFormat(format)
         .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage).setDebugName(name);
-}
-
-// Sampled textures at slots first, first + 1, ..., then the storage images after them.
-inline rhi::BindingSetDesc textureBindings(rg::PassContext& ctx, uint32_t first, std::initializer_list<rg::RgTexture> sampled,
-                                           std::initializer_list<rg::RgTexture> storage) {
-    rhi::BindingSetDesc d;
-    uint32_t slot = first;
-    for (rg::RgTexture t : sampled) d.add(rhi::BindingSetItem::sampledTexture(slot++, ctx.texture(t)));
-    for (rg::RgTexture t : storage) d.add(rhi::BindingSetItem::storageTexture(slot++, ctx.texture(t)));
-    return d;
 }
 
 // Binds a filter pipeline with its set and push constants; false (nothing bound) when the set failed.

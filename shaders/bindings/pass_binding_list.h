@@ -8,6 +8,8 @@
 #include "caustic_filter/atrous_bindings.h"
 #include "caustic_filter/output_bindings.h"
 #include "caustic_filter/resolve_bindings.h"
+#include "caustic_filter/temporal_bindings.h"
+#include "caustic_filter/tiles_bindings.h"
 #include "caustic_filter/variance_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 
@@ -15,6 +17,7 @@ namespace caustics::shader_bindings {
 
 inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
                                                      &kCausticAtrousBindings, &kCausticAtrousLastBindings, &kCausticVarianceBindings,
-                                                     &kCausticFilterOutputBindings, &kCausticResolveBindings};
+                                                     &kCausticFilterOutputBindings, &kCausticResolveBindings,
+                                                     &kCausticFilterTilesBindings, &kCausticTileListBindings, &kCausticTemporalBindings};
 
 }  // namespace caustics::shader_bindings

@@ -42,11 +42,18 @@ CAUSTICS_FN float atrousSpreadWeight(int2 offset, int stepWidth, float zq, float
                                      float lq, float lp, float varianceQ, float varianceP, float sigmaLuminance) {
     int2 k = abs(offset) / stepWidth;
     float planar = dot(gradZq, float2(offset));
-    float wz = exp(-abs(zp - zq - planar) / (abs(planar) + 0.002f * zq * float(stepWidth)));
-    float wn = pow(max(0.0f, dot(nq, np)), 128.0f);
+    float depthTerm = abs(zp - zq - planar) / (abs(planar) + 0.002f * zq * float(stepWidth));
     float d = abs(lp - lq) / (sigmaLuminance * sqrt(varianceQ + varianceP) + 1e-20f);
-    float wl = exp(-0.5f * d * d);
-    return atrousKernelTap(k.x) * atrousKernelTap(k.y) * wz * wn * wl;
+    float c = max(0.0f, dot(nq, np));
+    c *= c;   // ^2
+    c *= c;   // ^4
+    c *= c;   // ^8
+    c *= c;   // ^16
+    c *= c;   // ^32
+    c *= c;   // ^64
+    c *= c;   // ^128: seven squarings, not pow (a log and an exp per weight)
+    // w_z w_l in one exponential.
+    return atrousKernelTap(k.x) * atrousKernelTap(k.y) * c * exp(-depthTerm - 0.5f * d * d);
 }
 
 // The lattices of a step-s iteration: the screen's tiles form blocks of s x s tiles (8s x 8s pixels);

@@ -4,9 +4,10 @@
 // of 64 threads runs one step-s lattice (atrous.h) in three phases over shared memory:
 //   load     16 x 16 lattice points: pool colour and the packed guide caustics.temporal wrote once per
 //            frame (depth, normal, object id, depth slope), found through this frame's slot map;
-//   sources  W_q of the 12 x 12 sources the receivers read (25 taps each, from shared memory);
-//   receive  each of the 8 x 8 receivers sums its 25 sources' shares and writes its pool texel (or,
-//            kAtrousLast, caustics.radiance).
+//   sources  W_q of the 12 x 12 sources the receivers read (25 weights each, from shared memory; the
+//            weights stay in shared memory: 27 KB in all, under the 32 KB D3D12 and lavapipe give);
+//   receive  each of the 8 x 8 receivers sums its 25 sources' shares w / W_q and writes its pool texel
+//            (or, kAtrousLast, caustics.radiance).
 // A point outside the view or in a tile without a pool tile holds nothing: it is neither a source nor
 // a receiver (docs/caustics.md "Tiles": the energy stays in the listed tiles).
 #if defined(kAtrousLast)
@@ -23,6 +24,7 @@ FILTER_GROUPSHARED float2 sGradient[kAtrousRegion * kAtrousRegion];      // dept
 FILTER_GROUPSHARED uint sId[kAtrousRegion * kAtrousRegion];
 FILTER_GROUPSHARED uint sSlot[kAtrousRegion * kAtrousRegion];            // kFilterNoSlot: holds nothing
 FILTER_GROUPSHARED float sSourceSum[kAtrousSources * kAtrousSources];    // W_q
+FILTER_GROUPSHARED float sWeight[kAtrousSources * kAtrousSources * 25];  // w(q -> q + step (dx, dy)), 5x5 row-major
 FILTER_GROUPSHARED uint sFirstListed;                                    // the block's first listed tile
 
 bool atrousListed(int2 tile, int2 tileCount) {
@@ -51,8 +53,9 @@ void atrousLoad(int2 origin, uint local) {
     }
 }
 
-// W_q of the source at region point `at`: the sum of its weights to the 5x5 receivers that hold data.
-float atrousSourceSum(int2 at) {
+// W_q of the source at region point `at` (source index `source`): the sum of its weights to the 5x5
+// receivers that hold data, each kept in sWeight for the receivers' phase.
+float atrousSourceSum(int2 at, uint source) {
     uint e = atrousRegionIndex(at);
     if (sSlot[e] == kFilterNoSlot || sId[e] == 0u) return 1.0f;
     float4 c = sColor[e];
@@ -64,9 +67,11 @@ float atrousSourceSum(int2 at) {
             if (sSlot[r] == kFilterNoSlot || sId[r] != sId[e]) continue;
             float4 cp = sColor[r];
             float4 ndp = sNormalDepth[r];
-            total += atrousSpreadWeight(int2(dx, dy) * params.stepWidth, params.stepWidth, nd.w, ndp.w, sGradient[e],
-                                        nd.xyz, ndp.xyz, filterLuminance(c.rgb), filterLuminance(cp.rgb), c.a * c.a,
-                                        cp.a * cp.a, params.sigmaLuminance);
+            float w = atrousSpreadWeight(int2(dx, dy) * params.stepWidth, params.stepWidth, nd.w, ndp.w, sGradient[e], nd.xyz,
+                                         ndp.xyz, filterLuminance(c.rgb), filterLuminance(cp.rgb), c.a * c.a, cp.a * cp.a,
+                                         params.sigmaLuminance);
+            sWeight[source * 25u + uint((dy + 2) * 5 + dx + 2)] = w;
+            total += w;
         }
     }
     return total;   // >= the centre's own weight 9/64 > 0
@@ -93,8 +98,6 @@ void atrousReceive(int2 origin, int2 point) {
         atrousStore(p, slot, centre.rgb, centre.a);
         return;
     }
-    float4 np = sNormalDepth[e];
-    float lp = filterLuminance(centre.rgb);
     float3 sum = float3(0.0f, 0.0f, 0.0f);
     float variance = 0.0f;
     for (int dy = -2; dy <= 2; ++dy) {
@@ -103,12 +106,10 @@ void atrousReceive(int2 origin, int2 point) {
             uint r = atrousRegionIndex(source);
             if (sSlot[r] == kFilterNoSlot || sId[r] != sId[e]) continue;
             float4 c = sColor[r];
-            float4 nq = sNormalDepth[r];
             int2 s = source - int2(kAtrousApron - 2, kAtrousApron - 2);
-            float share = atrousSpreadWeight(int2(-dx, -dy) * params.stepWidth, params.stepWidth, nq.w, np.w, sGradient[r],
-                                             nq.xyz, np.xyz, filterLuminance(c.rgb), lp, c.a * c.a, centre.a * centre.a,
-                                             params.sigmaLuminance) /
-                          sSourceSum[s.y * kAtrousSources + s.x];
+            uint q = uint(s.y * kAtrousSources + s.x);
+            // The source's weight towards this receiver, offset (-dx, -dy) from it (atrousSourceSum).
+            float share = sWeight[q * 25u + uint((2 - dy) * 5 + 2 - dx)] / sSourceSum[q];
             sum += share * c.rgb;
             variance += share * share * c.a * c.a;
         }
@@ -122,7 +123,8 @@ void atrousRunLattice(int2 origin, uint local) {
     FILTER_BARRIER();
     for (uint e = local; e < uint(kAtrousSources * kAtrousSources); e += kFilterGroupThreads)
         sSourceSum[e] = atrousSourceSum(int2(int(e) % kAtrousSources, int(e) / kAtrousSources) +
-                                        int2(kAtrousApron - 2, kAtrousApron - 2));
+                                            int2(kAtrousApron - 2, kAtrousApron - 2),
+                                        e);
     FILTER_BARRIER();
     atrousReceive(origin, int2(int(local) % kFilterTileSize, int(local) / kFilterTileSize));
     FILTER_BARRIER();   // the next lattice overwrites the shared arrays

@@ -31,34 +31,28 @@ float3 resolveDecode(uint a, uint b, uint c) {
     if ((params.flags & kResolveFixedPoint) != 0u) return float3(float(a), float(b), float(c)) * params.invScale;
     return float3(filterBitsToFloat(a), filterBitsToFloat(b), filterBitsToFloat(c));
 }
-float3 resolveFirst(uint pixel) {
+// Word i of the first type's buffer, or of the second's.
+uint resolveWord(bool second, uint i) { return second ? secondWordsLoad(i) : firstWordsLoad(i); }
+float3 resolveRadiance(bool second, uint pixel) {
     if ((params.flags & kResolveWide) != 0u) {
         uint i = 6u * pixel;
-        return float3(resolveWide(firstWordsLoad(i), firstWordsLoad(i + 1u)), resolveWide(firstWordsLoad(i + 2u), firstWordsLoad(i + 3u)),
-                      resolveWide(firstWordsLoad(i + 4u), firstWordsLoad(i + 5u))) * params.invScale;
+        return float3(resolveWide(resolveWord(second, i), resolveWord(second, i + 1u)),
+                      resolveWide(resolveWord(second, i + 2u), resolveWord(second, i + 3u)),
+                      resolveWide(resolveWord(second, i + 4u), resolveWord(second, i + 5u))) * params.invScale;
     }
     uint i = 3u * pixel;
-    return resolveDecode(firstWordsLoad(i), firstWordsLoad(i + 1u), firstWordsLoad(i + 2u));
-}
-float3 resolveSecond(uint pixel) {
-    if ((params.flags & kResolveWide) != 0u) {
-        uint i = 6u * pixel;
-        return float3(resolveWide(secondWordsLoad(i), secondWordsLoad(i + 1u)), resolveWide(secondWordsLoad(i + 2u), secondWordsLoad(i + 3u)),
-                      resolveWide(secondWordsLoad(i + 4u), secondWordsLoad(i + 5u))) * params.invScale;
-    }
-    uint i = 3u * pixel;
-    return resolveDecode(secondWordsLoad(i), secondWordsLoad(i + 1u), secondWordsLoad(i + 2u));
+    return resolveDecode(resolveWord(second, i), resolveWord(second, i + 1u), resolveWord(second, i + 2u));
 }
 
 void resolveThread(uint2 p) {
     if (p.x >= params.width || p.y >= params.height) return;
     uint pixel = p.y * params.width + p.x;
-    float3 a = resolveFirst(pixel);
+    float3 a = resolveRadiance(false, pixel);
     if ((params.flags & kResolveCombinedOnly) != 0u) {
         CAUSTICS_IMAGE_STORE(outCombined, int2(p), float4(a, 1.0f));
         return;
     }
-    float3 b = resolveSecond(pixel);
+    float3 b = resolveRadiance(true, pixel);
     CAUSTICS_IMAGE_STORE(outFirst, int2(p), float4(a, 1.0f));
     CAUSTICS_IMAGE_STORE(outSecond, int2(p), float4(b, 1.0f));
     CAUSTICS_IMAGE_STORE(outCombined, int2(p), float4(a + b, 1.0f));
