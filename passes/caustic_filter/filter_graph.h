@@ -76,7 +76,7 @@ struct HistoryHandles {
 };
 HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& history);
 
-// The filter's tile list (tile_list.comp): `args` (listed tiles with a pool tile, 1, 1, tiles wanted)
+// The filter's tile list (caustics.filterTiles.list, shaders/tiles.h): `args` (listed tiles with a pool tile, 1, 1, tiles wanted)
 // for the indirect dispatches, `list` the packed tiles (list index = pool tile), `slots` this frame's
 // slot map.
 struct FilterTiles {

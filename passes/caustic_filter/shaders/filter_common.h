@@ -6,8 +6,8 @@
 #include "common/lang.h"
 
 CAUSTICS_SHARED_BEGIN
-// The filter runs over 8x8 pixel tiles, one 8x8 group (64 threads) per listed tile (tile_list.comp),
-// packed x | y << 16. Its per-pixel data lives in a pool of 8x8 tiles, kFilterPoolTilesPerRow to a row
+// The filter runs over 8x8 pixel tiles, one 8x8 group (64 threads) per listed tile (the list of
+// caustics.filterTiles.list, tiles.h), packed x | y << 16. Its per-pixel data lives in a pool of 8x8 tiles, kFilterPoolTilesPerRow to a row
 // (caustic_filter.h); the slot map names each screen tile's pool tile, kFilterNoSlot where none.
 CAUSTICS_CONST int kFilterTileSize = 8;
 CAUSTICS_CONST uint kFilterGroupThreads = 64u;

@@ -41,7 +41,7 @@ int2 variancePoolTexel(int2 q) {
 }
 
 // The history length n of a pool texel: the high half of the history guide's first word
-// (filterPackGuide, shaders/vulkan/caustic_filter/filter_common.glsl).
+// (filterPackGuide, temporal_thread.h).
 float varianceHistoryLength(int2 t) { return filterUnpackHalf2(CAUSTICS_TEXEL(temporalGuides, t).x).y; }
 
 // 3x3 mean of the neighbours' temporal variance on the same object (SVGF prefilters the variance the
