@@ -82,6 +82,10 @@ Status setOption(BenchOptions& o, std::string_view flag, std::string_view value)
     } else if (flag == "--filter") {
         if (value != "on" && value != "off") return makeError("--filter: expected on or off, got '" + std::string(value) + "'");
         o.filter = value == "on";
+    } else if (flag == "--view") {
+        if (value != "visible" && value != "away")
+            return makeError("--view: expected visible or away, got '" + std::string(value) + "'");
+        o.viewAway = value == "away";
     } else if (flag == "--out") {
         if (value.empty()) return makeError("--out: empty folder name");
         o.outDir = std::string(value);
@@ -122,6 +126,7 @@ std::string benchUsage() {
         "  --depth D                   specular events per caustic path, 1 .. 31 (default 4)\n"
         "  --map-size N                caustic map side, 1 .. 8192 (default 512)\n"
         "  --filter on|off             caustic filter (default off, as the paper measured)\n"
+        "  --view visible|away         caustics, frame: the scene's camera, or turned away from every caustic\n"
         "  --map-occluders on|off      caustic maps also draw occluders (default off: specular objects only)\n"
         "  --out DIR                   sweep, figures, memory: folder for the CSV / PFM files (created)\n"
         "  --reference-frames N        sweep: frames of 16 rays per texel in the quality reference (default 16)\n"

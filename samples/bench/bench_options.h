@@ -25,6 +25,7 @@ struct BenchOptions {
     uint32_t maxDepth = 4;
     uint32_t mapResolution = 512;
     bool filter = false;            // the paper measured with the filter off
+    bool viewAway = false;          // caustics / frame: the camera turned away from every caustic (--view away)
     bool mapOccluders = false;      // CausticsSettings::mapOccluders
     std::string outDir;             // sweep: where the CSV files go
     uint32_t referenceFrames = 16;  // sweep: frames of the converged reference (x 16 rays per texel)

@@ -38,6 +38,17 @@ void printCounters(const Measurement& m) {
     }(), double(m.transientHeapBytes) / (1 << 20));
 }
 
+// The caustic filter's passes (passes/caustic_filter: the tile passes, temporal, variance, a-trous,
+// filterOutput; not caustics.resolve, which runs with the filter off too).
+double filterMs(const Measurement& m) {
+    double sum = 0.0;
+    for (const auto& [pass, ms] : m.passMs)
+        for (const char* prefix : {"caustics.filterTiles", "caustics.temporal", "caustics.variance", "caustics.atrous.",
+                                   "caustics.filterOutput"})
+            if (pass.rfind(prefix, 0) == 0) sum += ms;
+    return sum;
+}
+
 int runMeasuredMode(const BenchOptions& o, bool everyPass) {
     const char* mode = everyPass ? "frame" : "caustics";
     auto device = createBenchDevice(o);
@@ -53,14 +64,16 @@ int runMeasuredMode(const BenchOptions& o, bool everyPass) {
         if (!sc) return fail(mode, name + ": " + sc.message());
         auto session = BenchSession::create(device.value(), sc.value(), settings);
         if (!session) return fail(mode, name + ": " + session.message());
-        auto m = measure(device.value(), *session.value(), settings, o.width, o.height, BenchView::Visible, o, false);
+        const BenchView view = o.viewAway ? BenchView::Away : BenchView::Visible;
+        auto m = measure(device.value(), *session.value(), settings, o.width, o.height, view, o, false);
         if (!m) return fail(mode, name + ": " + m.message());
-        std::printf("\nscene %s%s: %zu lights, %u maps, %ux%u, map %u, %.2f rays/texel, depth %u, filter %s\n",
+        std::printf("\nscene %s%s: %zu lights, %u maps, %ux%u, map %u, %.2f rays/texel, depth %u, filter %s, view %s\n",
                     sc->name.c_str(), sc->isStandIn ? " [generated stand-in]" : "", sc->lights.size(), m->maps, o.width,
                     o.height, settings.mapResolution, settings.raysPerTexel, settings.maxSpecularDepth,
-                    settings.filter ? "on" : "off");
+                    settings.filter ? "on" : "off", viewName(view));
         for (const auto& [pass, ms] : m->passMs)
             if (everyPass || pass.rfind("caustics.", 0) == 0) std::printf("  %-22s %9.3f ms\n", pass.c_str(), ms);
+        if (settings.filter) std::printf("  %-22s %9.3f ms\n", "filter total", filterMs(m.value()));
         std::printf("  %-22s %9.3f ms\n  %-22s %9.3f ms\n", "caustics total", m->causticsMs, "frame (all passes)",
                     m->frameMs);
         printCounters(m.value());

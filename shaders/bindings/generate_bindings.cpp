@@ -62,6 +62,8 @@ const char* glslFormat(ImageFormat f) {
         case ImageFormat::Rgba32f: return "rgba32f";
         case ImageFormat::R32f: return "r32f";
         case ImageFormat::R32ui: return "r32ui";
+        case ImageFormat::Rg32ui: return "rg32ui";
+        case ImageFormat::Rgba32ui: return "rgba32ui";
         case ImageFormat::None: break;
     }
     return "";
@@ -72,6 +74,8 @@ const char* hlslImageElement(ImageFormat f) {
         case ImageFormat::Rgba8: return "unorm float4";
         case ImageFormat::R32f: return "float";
         case ImageFormat::R32ui: return "uint";
+        case ImageFormat::Rg32ui: return "uint2";
+        case ImageFormat::Rgba32ui: return "uint4";
         default: return "float4";
     }
 }
@@ -124,7 +128,9 @@ bool writeBinding(const Binding& b, std::string& glsl, std::string& hlsl, std::s
                 error = name + ": a storage texture needs its format";
                 return false;
             }
-            const char* prefix = b.format == ImageFormat::R32ui ? "u" : "";
+            const bool unsignedFormat =
+                b.format == ImageFormat::R32ui || b.format == ImageFormat::Rg32ui || b.format == ImageFormat::Rgba32ui;
+            const char* prefix = unsignedFormat ? "u" : "";
             glsl += layoutHead(b, glslFormat(b.format)) + " uniform " + prefix + "image2D " + name + ";\n";
             hlsl += std::string("RWTexture2D<") + hlslImageElement(b.format) + "> " + name + registerOf(b, 'u');
             return true;

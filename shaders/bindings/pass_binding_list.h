@@ -5,10 +5,19 @@
 #include "composite/composite_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
+#include "caustic_filter/atrous_bindings.h"
+#include "caustic_filter/output_bindings.h"
+#include "caustic_filter/resolve_bindings.h"
+#include "caustic_filter/temporal_bindings.h"
+#include "caustic_filter/tiles_bindings.h"
+#include "caustic_filter/variance_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 
 namespace caustics::shader_bindings {
 
-inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings};
+inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
+                                                     &kCausticAtrousBindings, &kCausticAtrousLastBindings, &kCausticVarianceBindings,
+                                                     &kCausticFilterOutputBindings, &kCausticResolveBindings,
+                                                     &kCausticFilterTilesBindings, &kCausticTileListBindings, &kCausticTemporalBindings};
 
 }  // namespace caustics::shader_bindings

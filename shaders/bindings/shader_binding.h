@@ -22,7 +22,7 @@ enum class Kind : uint8_t {
 };
 
 // Storage-texture formats (their GLSL layout qualifier, the HLSL element type, the C++ format).
-enum class ImageFormat : uint8_t { None, Rgba8, Rgba16f, Rgba32f, R32f, R32ui };
+enum class ImageFormat : uint8_t { None, Rgba8, Rgba16f, Rgba32f, R32f, R32ui, Rg32ui, Rgba32ui };
 
 struct Binding {
     std::string_view name;      // the shader-visible name, and the key a binding set is filled by

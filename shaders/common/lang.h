@@ -36,6 +36,7 @@ using float3 = glm::vec3;
 using float4 = glm::vec4;
 using uint = std::uint32_t;
 using uint2 = glm::uvec2;
+using uint4 = glm::uvec4;
 using int2 = glm::ivec2;
 
 using glm::abs;
@@ -89,6 +90,7 @@ inline float3 splat3(float x) { return float3(x); }
 #define float3 vec3
 #define float4 vec4
 #define uint2 uvec2
+#define uint4 uvec4
 #define int2 ivec2
 #define splat2(x) vec2(x)
 #define splat3(x) vec3(x)
