@@ -4,10 +4,12 @@
 // (glslangValidator, #extension GL_GOOGLE_include_directive), as HLSL (DXC) and as C++20 with GLM.
 // Shared code is written in the HLSL spelling (float3, lerp, saturate, mul) with these rules:
 //  - float literals carry an `f` suffix (C++: a double would not mix with glm::vec3);
-//  - vector splats use splat2/splat3 (HLSL has no float3(x) constructor from one scalar);
+//  - vector splats use splat2/splat3 (HLSL has no float3(x) constructor from one scalar), a float4's
+//    first three components toFloat3(v) (C++ GLM has no swizzles);
 //  - functions are declared CAUSTICS_FN, out/inout parameters CAUSTICS_OUT(T)/CAUSTICS_INOUT(T),
 //    file-scope constants CAUSTICS_CONST;
-//  - no matrices in shared code (row/column conventions differ), no recursion, no pointers;
+//  - no matrices in shared code (row/column conventions differ) except float4x4 transforms applied
+//    through mat4Mul / mat3Mul (common/matrix.h), no recursion, no pointers;
 //  - the C++ spelling lives in namespace caustics::shader (CAUSTICS_SHARED_BEGIN/END).
 // The HLSL branch is deliberately minimal: Debian 12 has no dxc, so it is not compiled in CI.
 
@@ -36,6 +38,7 @@ using float3 = glm::vec3;
 using float4 = glm::vec4;
 using uint = std::uint32_t;
 using uint2 = glm::uvec2;
+using uint4 = glm::uvec4;
 using int2 = glm::ivec2;
 
 using glm::abs;
@@ -65,6 +68,7 @@ inline float lerp(float a, float b, float t) { return glm::mix(a, b, t); }
 inline float3 lerp(float3 a, float3 b, float t) { return glm::mix(a, b, t); }
 inline float2 splat2(float x) { return float2(x); }
 inline float3 splat3(float x) { return float3(x); }
+inline float3 toFloat3(float4 v) { return float3(v); }
 }  // namespace caustics::shader
 
 #elif defined(CAUSTICS_LANG_HLSL)
@@ -76,6 +80,7 @@ inline float3 splat3(float x) { return float3(x); }
 #define CAUSTICS_INOUT(T) inout T
 #define splat2(x) ((float2)(x))
 #define splat3(x) ((float3)(x))
+#define toFloat3(v) ((v).xyz)
 // lerp, saturate, mul, atan2 are HLSL intrinsics.
 
 #else  // GLSL
@@ -89,9 +94,11 @@ inline float3 splat3(float x) { return float3(x); }
 #define float3 vec3
 #define float4 vec4
 #define uint2 uvec2
+#define uint4 uvec4
 #define int2 ivec2
 #define splat2(x) vec2(x)
 #define splat3(x) vec3(x)
+#define toFloat3(v) ((v).xyz)
 #define lerp(a, b, t) mix(a, b, t)
 #define saturate(x) clamp(x, 0.0f, 1.0f)
 #define mul(m, v) ((m) * (v))
