@@ -31,7 +31,8 @@ Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path,
     return d.createComputePipeline(desc);
 }
 
-// Ray-generation + trace.rmiss/trace.rchit over the scene TLAS (forward and backward passes).
+}  // namespace
+
 Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, const rhi::BindingLayoutHandle& scene,
                        const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table) {
     rhi::StateObjectDesc desc;
@@ -50,8 +51,6 @@ Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, 
     CAUSTICS_TRY(table, d.createShaderTable(rhi::ShaderTableDesc{so}.setRayGen("rayGen").addMiss("miss").addHitGroup("hit")));
     return okStatus();
 }
-
-}  // namespace
 
 Result<rhi::BindingLayoutHandle> makeBindingLayout(rhi::IDevice& d, std::initializer_list<std::pair<uint32_t, BindingType>> items) {
     rhi::BindingLayoutDesc desc;
@@ -84,8 +83,7 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
                TX = BindingType::SampledTexture, AS = BindingType::AccelStruct;
     CAUSTICS_TRY(m.mapLayout, makeBindingLayout(d, {{0, RO}}));
     CAUSTICS_TRY(m.emitterLayout, makeBindingLayout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}, {5, RO}}));
-    CAUSTICS_TRY(m.forwardLayout, makeBindingLayout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW},
-                                                        {8, RW}, {9, RO}}));
+    CAUSTICS_CHECK(createForwardLayout(m));   // forward_trace/forward_pipeline.cpp
     CAUSTICS_TRY(m.photonPlanLayout, createPassBindingLayout(d, shader_bindings::kPhotonPlanBindings, 0, ShaderStage::All));
     CAUSTICS_TRY(m.photonPlanPipeline, compute(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout},
                                                sizeof(shader::PhotonPlanParams)));
@@ -153,12 +151,7 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     gp.debugName = "caustics.maps";
     CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
     CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout}, 8));
-    const char* forward = floatAtomics   ? "forward_trace/forward.rgen"
-                          : int64Atomics ? "forward_trace/forward_fixed64.rgen"
-                                         : "forward_trace/forward_fixed.rgen";
-    CAUSTICS_CHECK(sceneTraceState(d, forward,
-                                   kForwardPushBytes,
-                                   sceneLayout, forwardLayout, forwardState, forwardTable));
+    CAUSTICS_CHECK(createForwardState(*this, sceneLayout));   // forward_trace/forward_pipeline.cpp
     CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", kBackwardPushBytes, sceneLayout, backwardLayout, backwardState, backwardTable));
     sceneLayoutSeen = sceneLayout.get();
     return okStatus();

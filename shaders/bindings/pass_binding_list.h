@@ -5,10 +5,12 @@
 #include "composite/composite_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
+#include "forward_trace/forward_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 
 namespace caustics::shader_bindings {
 
-inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings};
+inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
+                                                     &kForwardBindings, &kForwardFixedBindings, &kForwardFixed64Bindings};
 
 }  // namespace caustics::shader_bindings

@@ -1,15 +1,17 @@
 #ifndef CAUSTICS_D3D12_RADIANCE_ATOMICS_HLSLI
 #define CAUSTICS_D3D12_RADIANCE_ATOMICS_HLSLI
 // Atomic RGB radiance per pixel, 3 words per pixel (mirror of shaders/vulkan/forward_trace/
-// radiance_atomics.glsl). Define RADIANCE_REGISTER (e.g. u5) and RADIANCE_SPACE, and declare the
-// `RWByteAddressBuffer stats` of caustic_hit.hlsli, first.
+// radiance_atomics.glsl). Define RADIANCE_REGISTER (e.g. u5) and RADIANCE_SPACE (or RADIANCE_DECLARED
+// where the pass's generated bindings declare radianceWords), and declare `RWByteAddressBuffer stats` first.
 // HLSL has no float atomic add (SM 6.6 adds only 64-bit integer atomics and bitwise float
 // compare-exchange), so the float variant is a compare-exchange loop on the float's bits: the buffer
 // holds the same float bits as the Vulkan float-atomic variant. CAUSTICS_FIXED_POINT (one uint per
 // channel) and CAUSTICS_FIXED_POINT_64 (one uint64 per channel, SM 6.6 InterlockedAdd64): value x the
 // frame's scale (stats[kStatFixedPointScale]), stochastically rounded, saturating and counted
 // (kStatSaturatedAdds), as on Vulkan (docs/caustics.md, "Fixed point").
+#ifndef RADIANCE_DECLARED
 RWByteAddressBuffer radianceWords : register(RADIANCE_REGISTER, RADIANCE_SPACE);
+#endif
 
 #if defined(CAUSTICS_FIXED_POINT) || defined(CAUSTICS_FIXED_POINT_64)
 // PCG output permutation (O'Neill 2014) used as an integer hash.

@@ -8,7 +8,8 @@
 // stats[kStatFixedPointScale]. Sub-LSB parts round stochastically (up with probability equal to the
 // fraction), so faint light adds up unbiased instead of vanishing; a sum that would pass the word's
 // maximum pins there and is counted (stats[kStatSaturatedAdds], causticStatsWarnings).
-// Define RADIANCE_SET / RADIANCE_BINDING and declare `uint stats[]` (caustic_hit.glsl slots) first.
+// Define RADIANCE_SET / RADIANCE_BINDING (or RADIANCE_DECLARED where the pass's generated bindings declare
+// radianceWords) and declare `uint stats[]` (common/caustic_stats.h slots) first.
 #if defined(CAUSTICS_FIXED_POINT) || defined(CAUSTICS_FIXED_POINT_64)
 // PCG output permutation (O'Neill 2014) used as an integer hash.
 uint radianceHash(uint x) {
@@ -29,7 +30,9 @@ float radianceFixedPointScale() { return uintBitsToFloat(stats[kStatFixedPointSc
 #if defined(CAUSTICS_FIXED_POINT_64)
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
+#ifndef RADIANCE_DECLARED
 layout(set = RADIANCE_SET, binding = RADIANCE_BINDING, std430) buffer RadianceBuffer { uint64_t radianceWords[]; };
+#endif
 void addRadiance(uint pixel, vec3 value) {
     const float scale = radianceFixedPointScale();
     for (uint c = 0u; c < 3u; ++c) {
@@ -51,7 +54,9 @@ void addRadiance(uint pixel, vec3 value) {
     }
 }
 #elif defined(CAUSTICS_FIXED_POINT)
+#ifndef RADIANCE_DECLARED
 layout(set = RADIANCE_SET, binding = RADIANCE_BINDING, std430) buffer RadianceBuffer { uint radianceWords[]; };
+#endif
 void addRadiance(uint pixel, vec3 value) {
     const float scale = radianceFixedPointScale();
     for (uint c = 0u; c < 3u; ++c) {
@@ -71,7 +76,9 @@ void addRadiance(uint pixel, vec3 value) {
 }
 #else
 #extension GL_EXT_shader_atomic_float : require
+#ifndef RADIANCE_DECLARED
 layout(set = RADIANCE_SET, binding = RADIANCE_BINDING, std430) buffer RadianceBuffer { float radianceWords[]; };
+#endif
 void addRadiance(uint pixel, vec3 value) {
     for (uint c = 0u; c < 3u; ++c) {
         if (value[c] > 0.0) atomicAdd(radianceWords[3u * pixel + c], value[c]);
