@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cstring>
 
+#include "caustic_maps/emitters_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
+#include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/grid_from_count.h"
 #include "caustic_maps/shaders/photon_plan.h"
 #include "caustics/rhi/log.h"
@@ -82,7 +84,7 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
                TX = BindingType::SampledTexture, AS = BindingType::AccelStruct;
     CAUSTICS_TRY(m.mapLayout, makeBindingLayout(d, {{0, RO}}));
-    CAUSTICS_TRY(m.emitterLayout, makeBindingLayout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}, {5, RO}}));
+    CAUSTICS_TRY(m.emitterLayout, createPassBindingLayout(d, shader_bindings::kEmittersBindings, 1, ShaderStage::All));
     CAUSTICS_CHECK(createForwardLayout(m));   // forward_trace/forward_pipeline.cpp
     CAUSTICS_TRY(m.photonPlanLayout, createPassBindingLayout(d, shader_bindings::kPhotonPlanBindings, 0, ShaderStage::All));
     CAUSTICS_TRY(m.photonPlanPipeline, compute(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout},
@@ -150,7 +152,8 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     gp.depthFormat = rhi::Format::D32_FLOAT;
     gp.debugName = "caustics.maps";
     CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
-    CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout}, 8));
+    CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout},
+                                          sizeof(shader::EmittersParams)));
     CAUSTICS_CHECK(createForwardState(*this, sceneLayout));   // forward_trace/forward_pipeline.cpp
     CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", kBackwardPushBytes, sceneLayout, backwardLayout, backwardState, backwardTable));
     sceneLayoutSeen = sceneLayout.get();

@@ -121,8 +121,9 @@ bool writeBinding(const Binding& b, std::string& glsl, std::string& hlsl, std::s
         }
         case Kind::SampledTexture: {
             const char* prefix = isUint(b.element) ? "u" : (isInt(b.element) ? "i" : "");
-            glsl += layoutHead(b) + " uniform " + prefix + "texture2D " + name + ";\n";
-            hlsl += "Texture2D<" + element + "> " + name + registerOf(b, 't');
+            const std::string dim = b.textureArray ? "2DArray" : "2D";
+            glsl += layoutHead(b) + " uniform " + prefix + "texture" + dim + " " + name + ";\n";
+            hlsl += "Texture" + dim + "<" + element + "> " + name + registerOf(b, 't');
             return true;
         }
         case Kind::StorageTexture: {

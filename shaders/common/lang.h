@@ -38,10 +38,12 @@ using float3 = glm::vec3;
 using float4 = glm::vec4;
 using uint = std::uint32_t;
 using uint2 = glm::uvec2;
+using uint3 = glm::uvec3;
 using uint4 = glm::uvec4;
 using int2 = glm::ivec2;
 
 using glm::abs;
+using glm::acos;
 using glm::atan;
 using glm::ceil;
 using glm::clamp;
@@ -94,6 +96,7 @@ inline float3 toFloat3(float4 v) { return float3(v); }
 #define float3 vec3
 #define float4 vec4
 #define uint2 uvec2
+#define uint3 uvec3
 #define uint4 uvec4
 #define int2 ivec2
 #define splat2(x) vec2(x)

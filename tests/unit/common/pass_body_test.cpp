@@ -6,6 +6,7 @@
 
 #include "composite/shaders/composite.h"
 #include "caustic_maps/shaders/grid_from_count.h"
+#include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/photon_plan.h"
 #include "forward_trace/shaders/forward.h"
 #include "gbuffer/shaders/remap_object_ids.h"
@@ -187,6 +188,19 @@ TEST(ForwardBody, SplatDepthToleranceGrowsWithTheViewAngle) {
     EXPECT_TRUE(splatDepthMatches(cam, 10.5f, 10.0f, 0.5f));    // tolerance 10 x (1e-3 + 0.03 x 1.732) = 0.53
     EXPECT_FALSE(splatDepthMatches(cam, 10.55f, 10.0f, 0.5f));
     EXPECT_FALSE(splatDepthMatches(cam, 9.4f, 10.0f, 0.5f));
+}
+
+// A spot light's map texel emits unless its whole footprint lies outside the outer cone.
+TEST(EmittersBody, OnlyTexelsWhollyOutsideTheSpotConeAreSkipped) {
+    CausticMap m = perspectiveMap();   // 90 degree frustum, 8 x 8 texels
+    m.spotAxis = m.forward;
+    m.cosOuter = cos(30.0f * kPi / 180.0f);
+    EXPECT_FALSE(texelOutsideSpotCone(m, uint2(3, 4), 8.0f));   // 10 degrees off the axis
+    EXPECT_TRUE(texelOutsideSpotCone(m, uint2(0, 0), 8.0f));    // the corner, 51 degrees off
+    // Texel (1, 4)'s centre is 32.5 degrees off the axis, within its 8.5 degree radius of the cone's edge.
+    EXPECT_FALSE(texelOutsideSpotCone(m, uint2(1, 4), 8.0f));
+    m.cosOuter = -2.0f;   // no cone
+    EXPECT_FALSE(texelOutsideSpotCone(m, uint2(0, 0), 8.0f));
 }
 
 }  // namespace
