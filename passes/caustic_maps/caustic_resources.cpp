@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cstring>
 
+#include "caustic_maps/caustic_map_bindings.h"
 #include "caustic_maps/emitters_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
+#include "caustic_maps/shaders/caustic_map.h"
 #include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/grid_from_count.h"
 #include "caustic_maps/shaders/photon_plan.h"
@@ -83,7 +85,7 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     m.int64Atomics = d.capabilities().shaderBufferInt64Atomics;
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
                TX = BindingType::SampledTexture, AS = BindingType::AccelStruct;
-    CAUSTICS_TRY(m.mapLayout, makeBindingLayout(d, {{0, RO}}));
+    CAUSTICS_TRY(m.mapLayout, createPassBindingLayout(d, shader_bindings::kCausticMapBindings, 1, ShaderStage::All));
     CAUSTICS_TRY(m.emitterLayout, createPassBindingLayout(d, shader_bindings::kEmittersBindings, 1, ShaderStage::All));
     CAUSTICS_CHECK(createForwardLayout(m));   // forward_trace/forward_pipeline.cpp
     CAUSTICS_TRY(m.photonPlanLayout, createPassBindingLayout(d, shader_bindings::kPhotonPlanBindings, 0, ShaderStage::All));
@@ -146,7 +148,7 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     CAUSTICS_TRY(gp.fragmentShader.code, pass_shaders::shaderCode(d.backend(), "caustic_maps/caustic_map.frag"));
     gp.fragmentShader.stage = ShaderStage::Fragment;
     gp.bindings.layouts = {sceneLayout, mapLayout};
-    gp.bindings.pushConstantBytes = 4;
+    gp.bindings.pushConstantBytes = sizeof(shader::CausticMapParams);
     gp.cullMode = rhi::CullMode::None;   // glass is seen from both sides
     gp.colorFormats = {rhi::Format::R32_UINT};   // objectId only: the forward pass reads nothing else
     gp.depthFormat = rhi::Format::D32_FLOAT;

@@ -3,6 +3,7 @@
 // GLSL and HLSL declarations of each. A pass adopting the scheme adds its declaration here and its
 // name to CAUSTICS_PASS_BINDINGS (shaders/bindings/CMakeLists.txt).
 #include "composite/composite_bindings.h"
+#include "caustic_maps/caustic_map_bindings.h"
 #include "caustic_maps/emitters_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
@@ -13,6 +14,6 @@ namespace caustics::shader_bindings {
 
 inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
                                                      &kForwardBindings, &kForwardFixedBindings, &kForwardFixed64Bindings,
-                                                     &kEmittersBindings};
+                                                     &kEmittersBindings, &kCausticMapBindings};
 
 }  // namespace caustics::shader_bindings
