@@ -7,6 +7,7 @@
 #include "caustic_maps/emitters_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
+#include "direct_lighting/direct_lighting_bindings.h"
 #include "forward_trace/forward_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 
@@ -14,6 +15,7 @@ namespace caustics::shader_bindings {
 
 inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
                                                      &kForwardBindings, &kForwardFixedBindings, &kForwardFixed64Bindings,
-                                                     &kEmittersBindings, &kCausticMapBindings};
+                                                     &kEmittersBindings, &kCausticMapBindings,
+                                                     &kDirectLightingBindings};
 
 }  // namespace caustics::shader_bindings

@@ -30,7 +30,7 @@ layout(set = SCENE_SET, binding = 3, std430) readonly buffer SceneIndices { uint
 layout(set = SCENE_SET, binding = 4, std430) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
 layout(set = SCENE_SET, binding = 5, std430) readonly buffer SceneInstances { GpuInstance sceneInstances[]; };
 layout(set = SCENE_SET, binding = 6, std430) readonly buffer SceneLights {
-    uint sceneLightCount; uint sceneLightPad0; uint sceneLightPad1; uint sceneLightPad2;
+    uint sceneLightTotal; uint sceneLightPad0; uint sceneLightPad1; uint sceneLightPad2;
     GpuLight sceneLights[];
 };
 #ifndef SCENE_NO_TEXTURES
@@ -43,6 +43,8 @@ GpuInstance sceneInstance(uint i) { return sceneInstances[i]; }
 GpuVertex sceneVertex(uint i) { return sceneVertices[i]; }
 GpuMaterial sceneMaterial(uint i) { return sceneMaterials[i]; }
 uint sceneIndex(uint i) { return sceneIndices[i]; }
+uint sceneLightCount() { return sceneLightTotal; }
+GpuLight sceneLight(uint i) { return sceneLights[i]; }
 vec3 scenePosition(uint vertex) {
     return vec3(scenePositions[3 * vertex], scenePositions[3 * vertex + 1], scenePositions[3 * vertex + 2]);
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "composite/shaders/composite.h"
+#include "direct_lighting/shaders/direct_light.h"
 #include "caustic_maps/shaders/grid_from_count.h"
 #include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/photon_plan.h"
@@ -201,6 +202,28 @@ TEST(EmittersBody, OnlyTexelsWhollyOutsideTheSpotConeAreSkipped) {
     EXPECT_FALSE(texelOutsideSpotCone(m, uint2(1, 4), 8.0f));
     m.cosOuter = -2.0f;   // no cone
     EXPECT_FALSE(texelOutsideSpotCone(m, uint2(0, 0), 8.0f));
+}
+
+// KHR_lights_punctual at a point: E = I / d^2 for point and spot lights, with the range window
+// saturate(1 - (d / range)^4)^2; a directional light's lux arrive unchanged.
+TEST(DirectLightBody, PunctualLightsFallOffWithTheSquareOfTheDistanceInsideTheirRange) {
+    GpuLight point{};
+    point.position = float3(0.0f, 2.0f, 0.0f);
+    point.type = kLightPoint;
+    point.intensity = float3(8.0f, 4.0f, 0.0f);
+    LightSample s = sampleLight(point, float3(0.0f));
+    EXPECT_FLOAT_EQ(s.distance, 2.0f);
+    EXPECT_EQ(s.toLight, float3(0.0f, 1.0f, 0.0f));
+    EXPECT_FLOAT_EQ(s.irradiance.x, 2.0f);
+    point.range = 4.0f;   // (1 - (2 / 4)^4)^2 = (15 / 16)^2
+    EXPECT_FLOAT_EQ(sampleLight(point, float3(0.0f)).irradiance.x, 2.0f * (15.0f / 16.0f) * (15.0f / 16.0f));
+    EXPECT_EQ(sampleLight(point, float3(0.0f, -3.0f, 0.0f)).irradiance.x, 0.0f);   // beyond the range
+    GpuLight sun{};
+    sun.type = kLightDirectional;
+    sun.direction = float3(0.0f, -1.0f, 0.0f);
+    sun.intensity = float3(3.0f);
+    EXPECT_EQ(sampleLight(sun, float3(5.0f)).irradiance, float3(3.0f));
+    EXPECT_EQ(sampleLight(sun, float3(5.0f)).toLight, float3(0.0f, 1.0f, 0.0f));
 }
 
 }  // namespace
