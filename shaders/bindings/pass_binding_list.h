@@ -9,6 +9,7 @@
 #include "caustic_maps/photon_plan_bindings.h"
 #include "direct_lighting/direct_lighting_bindings.h"
 #include "forward_trace/forward_bindings.h"
+#include "gbuffer/gbuffer_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 
 namespace caustics::shader_bindings {
@@ -16,6 +17,6 @@ namespace caustics::shader_bindings {
 inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
                                                      &kForwardBindings, &kForwardFixedBindings, &kForwardFixed64Bindings,
                                                      &kEmittersBindings, &kCausticMapBindings,
-                                                     &kDirectLightingBindings};
+                                                     &kDirectLightingBindings, &kGBufferBindings};
 
 }  // namespace caustics::shader_bindings

@@ -10,6 +10,7 @@
 #include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/photon_plan.h"
 #include "forward_trace/shaders/forward.h"
+#include "gbuffer/shaders/gbuffer.h"
 #include "gbuffer/shaders/remap_object_ids.h"
 
 namespace caustics::shader {
@@ -224,6 +225,12 @@ TEST(DirectLightBody, PunctualLightsFallOffWithTheSquareOfTheDistanceInsideTheir
     sun.intensity = float3(3.0f);
     EXPECT_EQ(sampleLight(sun, float3(5.0f)).irradiance, float3(3.0f));
     EXPECT_EQ(sampleLight(sun, float3(5.0f)).toLight, float3(0.0f, 1.0f, 0.0f));
+}
+
+// The G-buffer stores the side of a surface that is seen, whatever its winding.
+TEST(GBufferBody, NormalIsUnitAndFacesTheViewerWhateverTheWinding) {
+    EXPECT_EQ(gbufferFacingNormal(float3(0.0f, 0.0f, -2.0f), float3(0.0f, 0.0f, 1.0f)), float3(0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(gbufferFacingNormal(float3(0.0f, 3.0f, 0.0f), float3(0.0f, 1.0f, 1.0f)), float3(0.0f, 1.0f, 0.0f));
 }
 
 }  // namespace
