@@ -7,7 +7,7 @@
 namespace caustics::shader_bindings {
 
 inline constexpr Binding kDirectLightingBindingList[] = {
-    {"camera", Kind::ConstantBuffer, 1, 0, "CameraConstants"},   // common/camera_constants.h
+    {"camera", Kind::ConstantBuffer, 1, 0, "CameraConstants"},   // common/camera.h
     {"gNormalRoughness", Kind::SampledTexture, 2, 0, "float4"},
     {"gAlbedoMetallic", Kind::SampledTexture, 2, 1, "float4"},
     {"gLinearDepth", Kind::SampledTexture, 2, 2, "float4"},

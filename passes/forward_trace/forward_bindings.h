@@ -11,7 +11,7 @@ namespace caustics::shader_bindings {
 
 constexpr std::array<Binding, 10> forwardBindingList(std::string_view radianceWord, uint32_t radianceStride) {
     return {{
-        {"camera", Kind::ConstantBuffer, 1, 0, "CameraConstants"},          // common/camera_constants.h
+        {"camera", Kind::ConstantBuffer, 1, 0, "CameraConstants"},          // common/camera.h
         {"maps", Kind::StorageBufferRO, 1, 1, "CausticMap", {}, 176},       // common/caustic_map.h
         {"emitters", Kind::StorageBufferRO, 1, 2, "uint"},                  // packEmitter, layer x mapSize^2
         {"gLinearDepth", Kind::SampledTexture, 1, 3, "float4"},

@@ -7,7 +7,7 @@
 namespace caustics::shader_bindings {
 
 inline constexpr Binding kGBufferBindingList[] = {
-    {"camera", Kind::ConstantBuffer, 1, 0, "CameraConstants"},   // common/camera_constants.h
+    {"camera", Kind::ConstantBuffer, 1, 0, "CameraConstants"},   // common/camera.h
 };
 
 inline constexpr PassBindings kGBufferBindings{"gbuffer", "passes/gbuffer/gbuffer_bindings.h", kGBufferBindingList,

@@ -10,10 +10,10 @@
 #include "caustics/gpu_light.h"
 #include "caustics/scene/gpu_scene.h"
 #include "caustics/scene/gpu_types.h"
-#include "common/camera_constants.h"
+#include "common/camera.h"
 #include "common/caustic_hit.h"
 #include "common/caustic_map.h"
-#include "common/scene_surface.h"
+#include "common/scene.h"
 
 namespace caustics {
 namespace {

@@ -8,7 +8,6 @@
 #include "common/bsdf.h"
 #include "common/caustic_stats.h"
 #include "common/octahedral.h"
-#include "common/packing.h"
 
 CAUSTICS_SHARED_BEGIN
 struct CausticHit {

@@ -5,7 +5,6 @@
 // emitter list of caustics.emitters (docs/caustics.md, "Cost"): one uint per map texel that emits,
 // x | y << 13 | layer << 26 (map side <= 8192, <= 64 layers; caustic_emitters_pass.cpp checks both).
 #include "common/lang.h"
-#include "common/matrix.h"
 
 CAUSTICS_SHARED_BEGIN
 struct CausticMap {

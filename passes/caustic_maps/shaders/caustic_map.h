@@ -24,7 +24,7 @@ CAUSTICS_SHARED_END
 #include "bindings/caustic_map.h"   // generated from passes/caustic_maps/caustic_map_bindings.h
 
 // The layer's world -> clip transform (Vulkan clip). HLSL reads the matrix column by column
-// (common/matrix.h), not through the templated load.
+// (common/lang.h), not through the templated load.
 float4x4 causticMapViewProj(uint layer) {
 #if defined(CAUSTICS_LANG_GLSL)
     return maps[layer].viewProj;

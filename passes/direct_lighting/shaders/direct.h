@@ -9,7 +9,7 @@
 // Entries: direct.rgen, surface.rchit, surface.rmiss, shadow.rmiss and their .hlsl. GLSL and HLSL only:
 // direct_light.h holds the pure functions C++ compiles.
 #include "common/bsdf.h"
-#include "common/camera_constants.h"
+#include "common/camera.h"
 #include "common/resources.h"
 #include "common/view_lobes.h"
 #include "direct_light.h"

@@ -10,7 +10,7 @@
 // fixed-point radiance atomics; docs/caustics.md, "Fixed point"), forward*.hlsl; trace.rchit,
 // trace.rmiss, trace.hlsl.
 #include "common/bsdf.h"
-#include "common/camera_constants.h"
+#include "common/camera.h"
 #include "common/caustic_hit.h"
 #include "common/caustic_map.h"
 #include "common/emission.h"
@@ -110,7 +110,33 @@ CAUSTICS_SHARED_END
 // read the generated radianceWords and stats; docs/caustics.md, "Fixed point"), texel reads, and the
 // layer plan's emitted counter (a member of a struct element, so no generated accessor).
 #include "common/resources.h"
-#include "common/scene_trace.h"
+
+// traceScene(origin, tMin, dir, tMax): the scene TLAS traced opaque with hit group 0 and miss 0
+// (trace.rchit, trace.rmiss), their TracePayload returned (t < 0: miss).
+#if defined(CAUSTICS_LANG_GLSL)
+layout(location = 0) rayPayloadEXT TracePayload scenePayload;
+TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
+    scenePayload.t = -1.0f;
+    traceRayEXT(sceneTlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 0, 0, origin, tMin, dir, tMax, 0);
+    return scenePayload;
+}
+#elif defined(CAUSTICS_LANG_HLSL)
+TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
+    TracePayload payload;
+    payload.barycentrics = (float2)0.0f;
+    payload.instance = 0u;
+    payload.primitive = 0u;
+    payload.t = -1.0f;
+    RayDesc ray;
+    ray.Origin = origin;
+    ray.TMin = tMin;
+    ray.Direction = dir;
+    ray.TMax = tMax;
+    TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 0, 0, ray, payload);
+    return payload;
+}
+#endif
+
 #define RADIANCE_DECLARED
 #if defined(CAUSTICS_LANG_GLSL)
 #include "forward_trace/radiance_atomics.glsl"

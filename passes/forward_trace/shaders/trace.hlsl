@@ -1,4 +1,4 @@
-// D3D12 closest hit and miss of every scene trace (trace.rchit, trace.rmiss; common/scene_trace.h).
+// D3D12 closest hit and miss of every scene trace (trace.rchit, trace.rmiss; forward.h traceScene).
 #include "common/caustic_hit.h"
 #if defined(CAUSTICS_STAGE_RCHIT)
 [shader("closesthit")]

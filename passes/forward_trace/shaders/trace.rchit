@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_ray_tracing : require
-// Closest hit of every scene trace (common/scene_trace.h): reports the surface (instance, primitive,
+// Closest hit of every scene trace (forward.h traceScene): reports the surface (instance, primitive,
 // barycentrics, t); the ray-generation shader does the shading, so recursion depth stays 1 (paper
 // Figure 4a, iterative). The backward pass traces with it too.
 #include "common/caustic_hit.h"

@@ -4,7 +4,7 @@
 // push constant), the vertices pulled from the scene buffers (no vertex input state), and the six
 // targets of passes/include/caustics/gbuffer.h. Entries: gbuffer.vert / .frag, gbuffer.hlsl (the
 // fragment entries define CAUSTICS_STAGE_FRAG, as the HLSL embedder does).
-#include "common/camera_constants.h"
+#include "common/camera.h"
 #include "common/scene.h"
 
 CAUSTICS_SHARED_BEGIN

@@ -3,9 +3,9 @@
 // D3D12 declarations of the GPU scene, the same binding layout as shaders/vulkan/scene/scene.glsl:
 // register space 0 by default (define SCENE_SPACE before including to move it), registers = the GLSL
 // binding numbers. The structs and the surface of a hit are the shared dialect's common/scene.h and
-// common/scene_surface.h (docs/shaders.md, "Scene API"). Storage buffers are ByteAddressBuffers read
+// common/scene.h (docs/shaders.md, "Scene API"). Storage buffers are ByteAddressBuffers read
 // with the templated Load<T> (the D3D12 backend creates raw views for every storage buffer,
-// docs/d3d12.md); a float4x4 is read column by column (common/matrix.h).
+// docs/d3d12.md); a float4x4 is read column by column (common/lang.h).
 // Define SCENE_NO_TEXTURES / SCENE_UNIFORM_TEXTURE_INDEX / SCENE_NO_TLAS as for the GLSL.
 #include "common/scene.h"
 
@@ -30,7 +30,7 @@ Texture2D<float4> sceneTextures[SCENE_MAX_TEXTURES] : register(t8, SCENE_SPACE);
 
 float3 loadFloat3(ByteAddressBuffer b, uint offset) { return asfloat(b.Load3(offset)); }
 
-// The accessors common/scene_surface.h reads the scene through (the Vulkan shim has the same).
+// The accessors common/scene.h reads the scene through (the Vulkan shim has the same).
 uint sceneIndex(uint i) { return sceneIndexBuffer.Load(4u * i); }
 float3 scenePosition(uint vertex) { return loadFloat3(scenePositionBuffer, 12u * vertex); }
 GpuVertex sceneVertex(uint i) { return sceneVertexBuffer.Load<GpuVertex>(48u * i); }
@@ -63,5 +63,4 @@ float3 sceneBaseColor(GpuMaterial m, float2 uv) {
     return c;
 }
 
-#include "common/scene_surface.h"
 #endif

@@ -1,5 +1,5 @@
 #ifndef CAUSTICS_SCENE_CAMERA_GLSL
 #define CAUSTICS_SCENE_CAMERA_GLSL
-// The camera constants and their functions are the shared dialect's common/camera_constants.h.
-#include "common/camera_constants.h"
+// The camera constants and their functions are the shared dialect's common/camera.h.
+#include "common/camera.h"
 #endif

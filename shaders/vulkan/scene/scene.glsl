@@ -2,7 +2,7 @@
 #define CAUSTICS_SCENE_SCENE_GLSL
 // Vulkan declarations of the GPU scene as bound by caustics::SceneBindings
 // (passes/internal/caustics/scene_bindings.h); the structs and the surface of a hit are the shared
-// dialect's common/scene.h and common/scene_surface.h (docs/shaders.md, "Scene API"). One descriptor
+// dialect's common/scene.h and common/scene.h (docs/shaders.md, "Scene API"). One descriptor
 // set, by default set 0 (define SCENE_SET before including to move it). Define SCENE_NO_TEXTURES to
 // leave the texture array out of a shader, and SCENE_UNIFORM_TEXTURE_INDEX where the material is
 // dynamically uniform (one draw per instance), which drops the nonuniformEXT qualifier (and its
@@ -38,7 +38,7 @@ layout(set = SCENE_SET, binding = 7) uniform sampler sceneSampler;   // linear, 
 layout(set = SCENE_SET, binding = 8) uniform texture2D sceneTextures[SCENE_MAX_TEXTURES];   // RGBA8_SRGB
 #endif
 
-// The accessors common/scene_surface.h reads the scene through (the D3D12 shim has the same).
+// The accessors common/scene.h reads the scene through (the D3D12 shim has the same).
 GpuInstance sceneInstance(uint i) { return sceneInstances[i]; }
 GpuVertex sceneVertex(uint i) { return sceneVertices[i]; }
 GpuMaterial sceneMaterial(uint i) { return sceneMaterials[i]; }
@@ -66,5 +66,4 @@ vec3 sceneBaseColor(GpuMaterial m, vec2 uv) {
     return c;
 }
 
-#include "common/scene_surface.h"
 #endif

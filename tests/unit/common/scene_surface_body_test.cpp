@@ -1,4 +1,4 @@
-// The scene API's shared-dialect functions (shaders/common/scene_surface.h, camera_constants.h;
+// The scene API's shared-dialect functions (shaders/common/scene.h, camera_constants.h;
 // docs/shaders.md, "Scene API") compiled as C++: the surface a ray hit reports, and the camera's
 // projection and its inverse, as every pass's shaders compute them.
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "common/camera_constants.h"
-#include "common/scene_surface.h"
+#include "common/camera.h"
+#include "common/scene.h"
 
 namespace caustics::shader {
 
