@@ -137,12 +137,12 @@ TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
 }
 #endif
 
+// The radiance atomics: one file per API under the same name (shaders/vulkan|d3d12/forward_trace/).
 #define RADIANCE_DECLARED
+#include "forward_trace/radiance_atomics.h"
 #if defined(CAUSTICS_LANG_GLSL)
-#include "forward_trace/radiance_atomics.glsl"
 #define FORWARD_COUNT_EMITTED(layer) atomicAdd(plans[layer].emitted, 1u)
 #else
-#include "forward_trace/radiance_atomics.hlsli"
 #define FORWARD_COUNT_EMITTED(layer) plans.InterlockedAdd(32u * (layer) + 20u, 1u)   // CausticLayerPlan::emitted
 #endif
 

@@ -1,7 +1,7 @@
 #ifndef CAUSTICS_D3D12_RADIANCE_ATOMICS_HLSLI
 #define CAUSTICS_D3D12_RADIANCE_ATOMICS_HLSLI
 // Atomic RGB radiance per pixel, 3 words per pixel (mirror of shaders/vulkan/forward_trace/
-// radiance_atomics.glsl). Define RADIANCE_REGISTER (e.g. u5) and RADIANCE_SPACE (or RADIANCE_DECLARED
+// radiance_atomics.h). Define RADIANCE_REGISTER (e.g. u5) and RADIANCE_SPACE (or RADIANCE_DECLARED
 // where the pass's generated bindings declare radianceWords), and declare `RWByteAddressBuffer stats` first.
 // HLSL has no float atomic add (SM 6.6 adds only 64-bit integer atomics and bitwise float
 // compare-exchange), so the float variant is a compare-exchange loop on the float's bits: the buffer
