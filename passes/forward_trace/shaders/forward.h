@@ -86,12 +86,12 @@ CAUSTICS_SHARED_END
 namespace caustics::shader {
 CausticLayerPlan plansLoad(uint i);
 }  // namespace caustics::shader
+#elif !defined(CAUSTICS_FIXED_POINT) && !defined(CAUSTICS_FIXED_POINT_64)
+#include "bindings/forward.h"
 #elif defined(CAUSTICS_FIXED_POINT_64)
 #include "bindings/forward_fixed64.h"
-#elif defined(CAUSTICS_FIXED_POINT)
-#include "bindings/forward_fixed.h"
 #else
-#include "bindings/forward.h"
+#include "bindings/forward_fixed.h"
 #endif
 
 CAUSTICS_SHARED_BEGIN
