@@ -4,10 +4,14 @@
 // rays emitting PDF", 3.2; docs/caustics.md, "Cost"). The flux of a texel is unchanged: the same texels
 // emit the same photons as a dispatch over the whole map.
 #include "caustic_maps/caustic_internal.h"
+#include "caustic_maps/emitters_bindings.h"
+#include "caustic_maps/shaders/emitters.h"
+#include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
-// The packed emitter (shaders/vulkan/caustic_maps/emitter_list.glsl) has 13 bits per coordinate and
+// The packed emitter (shaders/common/caustic_map.h) has 13 bits per coordinate and
 // 6 bits of layer.
 static_assert(CausticsSettings::kMaxMapResolution <= (1u << 13));
 static_assert(kMaxCausticLights <= 64);
@@ -26,25 +30,30 @@ void addEmitterPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.layerPlans = b.write(f.layerPlans, rg::Access::StorageReadWrite);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
         f.owners = b.read(f.owners, rg::Access::SampledRead);
-        const uint32_t push[2] = {n, f.plan.instanceCount};
+        const shader::EmittersParams push{n, f.plan.instanceCount};
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            rhi::BindingSetDesc d;
-            d.add(rhi::BindingSetItem::storageBuffer(0, ctx.buffer(h.maps), false))
-                .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(h.mapIds)))
-                .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(h.emitters)))
-                .add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(h.layerPlans)))
-                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.stats)))
-                .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.owners), false));
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.emitterLayout, d);
+            auto desc = PassBindingSet(shader_bindings::kEmittersBindings, 1)
+                            .buffer("maps", ctx.buffer(h.maps))
+                            .texture("mapObjectIds", ctx.texture(h.mapIds))
+                            .buffer("emitters", ctx.buffer(h.emitters))
+                            .buffer("plans", ctx.buffer(h.layerPlans))
+                            .buffer("stats", ctx.buffer(h.stats))
+                            .buffer("owners", ctx.buffer(h.owners))
+                            .desc();
+            if (!desc) {
+                log(LogLevel::Error, "caustics.emitters: " + desc.message());
+                return;
+            }
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.emitterLayout, *desc);
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setComputePipeline(r.emitterPipeline);
             cmd.setBindingSet(0, sceneSet);
             cmd.setBindingSet(1, set);
-            cmd.setPushConstants(push, sizeof(push));
+            cmd.setPushConstants(&push, sizeof(push));
             cmd.dispatch((n + 7) / 8, (n + 7) / 8, layers);
         };
     });

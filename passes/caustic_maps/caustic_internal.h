@@ -7,13 +7,14 @@
 #include <vector>
 
 #include "caustic_filter/caustic_filter.h"
+#include "bindings/shader_binding.h"
 #include "caustics/caustic_passes.h"
 
 namespace caustics {
 
-// Push-constant bytes of the scene-trace passes (the Push structs of forward_trace_pass.cpp and
-// backward_pass.cpp); their state objects are created with exactly these, which binding_truth_tests
-// compare with the shaders' push blocks.
+// Push-constant bytes of the scene-trace passes (shader::ForwardParams, passes/forward_trace/shaders/forward.h,
+// and the Push struct of backward_pass.cpp); their state objects are created with exactly these, which
+// binding_truth_tests compare with the shaders' push blocks.
 inline constexpr uint32_t kForwardPushBytes = 32, kBackwardPushBytes = 40;
 
 // One frame slot's read-back sphere count (kStatSpheres) of the last frame recorded in it, with the
@@ -117,6 +118,15 @@ void addPhotonPlanPass(rg::RenderGraph& graph, CausticFrame& f);
 rg::RgBuffer addGridFromCountPass(rg::RenderGraph& graph, CausticFrame& f, const char* name, uint32_t statSlot,
                                   uint32_t cap, uint32_t gateSlot);
 void addForwardPass(rg::RenderGraph& graph, CausticFrame& f);
+// forward_trace/forward_pipeline.cpp: the forward pass's bindings (the variant of the device's
+// atomics), its layout (with the other persistent objects) and its state (per scene layout).
+const shader_bindings::PassBindings& forwardBindings(const CausticResources::Impl& r);
+Status createForwardLayout(CausticResources::Impl& r);
+Status createForwardState(CausticResources::Impl& r, const rhi::BindingLayoutHandle& sceneLayout);
+// A ray-tracing state over the scene TLAS: `rayGen` with forward_trace/trace.rmiss and trace.rchit
+// (the forward and backward passes; caustic_resources.cpp).
+Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, const rhi::BindingLayoutHandle& scene,
+                       const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table);
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
 void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);   // backward_trace/specular_pixels_pass.cpp
 // backward_trace/sphere_budget.cpp: the slot's read-back of the sphere count and f.sphereCapacity;

@@ -3,6 +3,10 @@
 // the forward pass reads is rendered: the objectId target (plus the depth it needs), and only the
 // instances inside each map's frustum (CausticMapPlan::drawnInstances).
 #include "caustic_maps/caustic_internal.h"
+#include "caustic_maps/caustic_map_bindings.h"
+#include "caustic_maps/shaders/caustic_map.h"
+#include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
@@ -33,8 +37,12 @@ void addMapPass(rg::RenderGraph& graph, CausticFrame& f) {
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.mapLayout,
-                                                  rhi::BindingSetDesc().add(rhi::BindingSetItem::storageBuffer(0, ctx.buffer(h.maps), false)));
+            auto desc = PassBindingSet(shader_bindings::kCausticMapBindings, 1).buffer("maps", ctx.buffer(h.maps)).desc();
+            if (!desc) {
+                log(LogLevel::Error, "caustics.maps: " + desc.message());
+                return;
+            }
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.mapLayout, *desc);
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();
             for (uint32_t layer = 0; layer < layers; ++layer) {
@@ -53,7 +61,8 @@ void addMapPass(rg::RenderGraph& graph, CausticFrame& f) {
                 cmd.setViewport(0.0f, 0.0f, float(n), float(n));
                 cmd.setBindingSet(0, sceneSet);
                 cmd.setBindingSet(1, set);
-                cmd.setPushConstants(&layer, 4);
+                const shader::CausticMapParams push{layer};
+                cmd.setPushConstants(&push, sizeof(push));
                 for (auto [instance, indexCount] : draws[layer]) cmd.draw(indexCount, 1, 0, instance);
                 cmd.endRendering();
             }

@@ -7,8 +7,12 @@
 #include <algorithm>
 #include <cstring>
 
+#include "caustic_maps/caustic_map_bindings.h"
+#include "caustic_maps/emitters_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
+#include "caustic_maps/shaders/caustic_map.h"
+#include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/grid_from_count.h"
 #include "caustic_maps/shaders/photon_plan.h"
 #include "caustics/rhi/log.h"
@@ -31,7 +35,8 @@ Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path,
     return d.createComputePipeline(desc);
 }
 
-// Ray-generation + trace.rmiss/trace.rchit over the scene TLAS (forward and backward passes).
+}  // namespace
+
 Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, const rhi::BindingLayoutHandle& scene,
                        const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table) {
     rhi::StateObjectDesc desc;
@@ -50,8 +55,6 @@ Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, 
     CAUSTICS_TRY(table, d.createShaderTable(rhi::ShaderTableDesc{so}.setRayGen("rayGen").addMiss("miss").addHitGroup("hit")));
     return okStatus();
 }
-
-}  // namespace
 
 Result<rhi::BindingLayoutHandle> makeBindingLayout(rhi::IDevice& d, std::initializer_list<std::pair<uint32_t, BindingType>> items) {
     rhi::BindingLayoutDesc desc;
@@ -82,10 +85,9 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     m.int64Atomics = d.capabilities().shaderBufferInt64Atomics;
     const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
                TX = BindingType::SampledTexture, AS = BindingType::AccelStruct;
-    CAUSTICS_TRY(m.mapLayout, makeBindingLayout(d, {{0, RO}}));
-    CAUSTICS_TRY(m.emitterLayout, makeBindingLayout(d, {{0, RO}, {1, TX}, {2, RW}, {3, RW}, {4, RW}, {5, RO}}));
-    CAUSTICS_TRY(m.forwardLayout, makeBindingLayout(d, {{0, CB}, {1, RO}, {2, RO}, {3, TX}, {4, TX}, {5, RW}, {6, RW}, {7, RW},
-                                                        {8, RW}, {9, RO}}));
+    CAUSTICS_TRY(m.mapLayout, createPassBindingLayout(d, shader_bindings::kCausticMapBindings, 1, ShaderStage::All));
+    CAUSTICS_TRY(m.emitterLayout, createPassBindingLayout(d, shader_bindings::kEmittersBindings, 1, ShaderStage::All));
+    CAUSTICS_CHECK(createForwardLayout(m));   // forward_trace/forward_pipeline.cpp
     CAUSTICS_TRY(m.photonPlanLayout, createPassBindingLayout(d, shader_bindings::kPhotonPlanBindings, 0, ShaderStage::All));
     CAUSTICS_TRY(m.photonPlanPipeline, compute(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout},
                                                sizeof(shader::PhotonPlanParams)));
@@ -136,19 +138,15 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     CAUSTICS_TRY(gp.fragmentShader.code, pass_shaders::shaderCode(d.backend(), "caustic_maps/caustic_map.frag"));
     gp.fragmentShader.stage = ShaderStage::Fragment;
     gp.bindings.layouts = {sceneLayout, mapLayout};
-    gp.bindings.pushConstantBytes = 4;
+    gp.bindings.pushConstantBytes = sizeof(shader::CausticMapParams);
     gp.cullMode = rhi::CullMode::None;   // glass is seen from both sides
     gp.colorFormats = {rhi::Format::R32_UINT};   // objectId only: the forward pass reads nothing else
     gp.depthFormat = rhi::Format::D32_FLOAT;
     gp.debugName = "caustics.maps";
     CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
-    CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout}, 8));
-    const char* forward = floatAtomics   ? "forward_trace/forward.rgen"
-                          : int64Atomics ? "forward_trace/forward_fixed64.rgen"
-                                         : "forward_trace/forward_fixed.rgen";
-    CAUSTICS_CHECK(sceneTraceState(d, forward,
-                                   kForwardPushBytes,
-                                   sceneLayout, forwardLayout, forwardState, forwardTable));
+    CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout},
+                                          sizeof(shader::EmittersParams)));
+    CAUSTICS_CHECK(createForwardState(*this, sceneLayout));   // forward_trace/forward_pipeline.cpp
     CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", kBackwardPushBytes, sceneLayout, backwardLayout, backwardState, backwardTable));
     sceneLayoutSeen = sceneLayout.get();
     return okStatus();

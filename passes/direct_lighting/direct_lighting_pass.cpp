@@ -1,20 +1,20 @@
+// Deferred direct lighting (paper 3.1) with ray-traced shadows and specular chains; the body is
+// passes/direct_lighting/shaders/direct.h, its resources direct_lighting_bindings.h.
 #include "direct_lighting_pass.h"
 
 #include "caustics/pass_shaders.h"
+#include "caustics/rhi/log.h"
+#include "direct_lighting/direct_lighting_bindings.h"
+#include "direct_lighting/shaders/direct_light.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
 Result<DirectLightingPass> DirectLightingPass::create(rhi::IDevice& device, const rhi::BindingLayoutHandle& sceneLayout,
                                                       const rhi::BindingLayoutHandle& cameraLayout) {
     DirectLightingPass pass;
-    rhi::BindingLayoutDesc layoutDesc;
-    layoutDesc.setVisibility(rhi::ShaderStage::AllRayTracing)
-        .add(0, rhi::BindingType::SampledTexture)    // normalRoughness
-        .add(1, rhi::BindingType::SampledTexture)    // albedoMetallic
-        .add(2, rhi::BindingType::SampledTexture)    // linearDepth
-        .add(3, rhi::BindingType::SampledTexture)    // objectId
-        .add(4, rhi::BindingType::StorageTexture);   // radiance out
-    CAUSTICS_TRY(pass.layout_, device.createBindingLayout(layoutDesc));
+    CAUSTICS_TRY(pass.layout_, createPassBindingLayout(device, shader_bindings::kDirectLightingBindings, 2,
+                                                       rhi::ShaderStage::AllRayTracing));
 
     auto library = [&](const char* file, const char* name, rhi::ShaderStage stage) {
         return pass_shaders::shaderLibrary(device.backend(), file, name, stage);
@@ -26,7 +26,7 @@ Result<DirectLightingPass> DirectLightingPass::create(rhi::IDevice& device, cons
     CAUSTICS_TRY(auto surfaceHit, library("direct_lighting/surface.rchit", "surfaceClosestHit", rhi::ShaderStage::ClosestHit));
     desc.libraries = {rgen, surfaceMiss, shadowMiss, surfaceHit};
     desc.hitGroups.push_back({"surfaceHit", rhi::HitGroupType::Triangles, "surfaceClosestHit", "", ""});
-    desc.maxPayloadBytes = 16;   // SurfacePayload
+    desc.maxPayloadBytes = sizeof(shader::SurfacePayload);
     desc.maxAttributeBytes = 8;
     desc.maxRecursionDepth = 1;  // only the raygen traces
     desc.globalBindings.layouts = {sceneLayout, cameraLayout, pass.layout_};
@@ -59,13 +59,18 @@ rg::RgTexture DirectLightingPass::addToGraph(rg::RenderGraph& graph, const Frame
         rhi::ShaderTableHandle table = shaderTable_;
         rhi::BindingSetHandle sceneSet = frame.sceneBindings->set, cameraSet = frame.cameraSet;
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc sd;
-            sd.add(rhi::BindingSetItem::sampledTexture(0, ctx.texture(normal)))
-                .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(albedo)))
-                .add(rhi::BindingSetItem::sampledTexture(2, ctx.texture(depth)))
-                .add(rhi::BindingSetItem::sampledTexture(3, ctx.texture(ids)))
-                .add(rhi::BindingSetItem::storageTexture(4, ctx.texture(target)));
-            auto set = ctx.device()->createBindingSet(sd, layout);
+            auto sd = PassBindingSet(shader_bindings::kDirectLightingBindings, 2)
+                          .texture("gNormalRoughness", ctx.texture(normal))
+                          .texture("gAlbedoMetallic", ctx.texture(albedo))
+                          .texture("gLinearDepth", ctx.texture(depth))
+                          .texture("gObjectId", ctx.texture(ids))
+                          .texture("outRadiance", ctx.texture(target))
+                          .desc();
+            if (!sd) {
+                log(LogLevel::Error, "direct_lighting: " + sd.message());
+                return;
+            }
+            auto set = ctx.device()->createBindingSet(*sd, layout);
             if (!set) {
                 log(LogLevel::Error, "direct_lighting: " + set.message());
                 return;

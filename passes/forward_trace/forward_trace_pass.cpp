@@ -1,12 +1,16 @@
 // caustics.forward (paper 3.2, Figure 4): one ray-generation launch per (emitting texel, sample) of
 // every map layer, in one dispatch whose grid caustics.photonPlan laid out on the GPU
 // (dispatchRaysIndirect; without it, a direct dispatch over forwardLaunchBound whose launches past the
-// last layer's range idle). forward.rgen emits, traces the specular chain, splats first-type caustics
-// atomically and stores the diffuse hits.
+// last layer's range idle). The body, passes/forward_trace/shaders/forward.h, emits, traces the specular
+// chain, splats first-type caustics atomically and stores the diffuse hits; forward_pipeline.cpp builds
+// its pipeline.
 #include <algorithm>
 #include <cmath>
 
 #include "caustic_maps/caustic_internal.h"
+#include "caustics/rhi/log.h"
+#include "forward_trace/shaders/forward.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
@@ -37,29 +41,31 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
                                                              .setDebugName("caustics.hits")),
                          rg::Access::StorageWrite);
         const uint32_t layers = uint32_t(f.plan.maps.size());
-        struct Push {
-            uint32_t mapSize, layers, instanceCount;
-            uint32_t maxDepth, frame, flags, maxStoredHits, pad;
-        } push{s.mapResolution, layers, f.plan.instanceCount, s.maxSpecularDepth,
-               f.in->frameIndex * 0x9E3779B9u + s.seed, s.russianRoulette ? 1u : 0u, maxStoredHits, 0};
-        static_assert(sizeof(Push) == kForwardPushBytes);
+        const shader::ForwardParams push{s.mapResolution, layers, f.plan.instanceCount, s.maxSpecularDepth,
+                                         f.in->frameIndex * 0x9E3779B9u + s.seed,
+                                         s.russianRoulette ? shader::kForwardRussianRoulette : 0u, maxStoredHits, 0};
         const uint64_t directLaunches = forwardLaunchBound(s, f.plan);
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            rhi::BindingSetDesc d;
-            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(h.camera)))
-                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(h.maps), false))
-                .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(h.emitters), false))
-                .add(rhi::BindingSetItem::sampledTexture(3, ctx.texture(linearDepth)))
-                .add(rhi::BindingSetItem::sampledTexture(4, ctx.texture(objectId)))
-                .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.radiance1)))
-                .add(rhi::BindingSetItem::storageBuffer(6, ctx.buffer(h.hits)))
-                .add(rhi::BindingSetItem::storageBuffer(7, ctx.buffer(h.stats)))
-                .add(rhi::BindingSetItem::storageBuffer(8, ctx.buffer(h.layerPlans)))
-                .add(rhi::BindingSetItem::storageBuffer(9, ctx.buffer(h.owners), false));
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.forwardLayout, d);
+            auto desc = PassBindingSet(forwardBindings(r), 1)
+                            .buffer("camera", ctx.buffer(h.camera))
+                            .buffer("maps", ctx.buffer(h.maps))
+                            .buffer("emitters", ctx.buffer(h.emitters))
+                            .texture("gLinearDepth", ctx.texture(linearDepth))
+                            .texture("gObjectId", ctx.texture(objectId))
+                            .buffer("radianceWords", ctx.buffer(h.radiance1))
+                            .buffer("hits", ctx.buffer(h.hits))
+                            .buffer("stats", ctx.buffer(h.stats))
+                            .buffer("plans", ctx.buffer(h.layerPlans))
+                            .buffer("owners", ctx.buffer(h.owners))
+                            .desc();
+            if (!desc) {
+                log(LogLevel::Error, "caustics.forward: " + desc.message());
+                return;
+            }
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.forwardLayout, *desc);
             if (!set) return;
             bindSceneTrace(ctx.cmd(), r.forwardState, r.forwardTable, sceneSet, set, push);
             if (indirect) ctx.cmd().dispatchRaysIndirect(ctx.buffer(h.forwardArgs));

@@ -1,8 +1,11 @@
+// The G-buffer raster: one draw per instance, vertex pulling; the body is
+// passes/gbuffer/shaders/gbuffer.h, its resources gbuffer_bindings.h (the camera set is the module's).
 #include "gbuffer_pass.h"
 
 #include <vector>
 
 #include "caustics/pass_shaders.h"
+#include "gbuffer/shaders/gbuffer.h"
 
 namespace caustics {
 
@@ -14,7 +17,7 @@ Result<GBufferPass> GBufferPass::create(rhi::IDevice& device, const rhi::Binding
     CAUSTICS_TRY(desc.fragmentShader.code, pass_shaders::shaderCode(device.backend(), "gbuffer/gbuffer.frag"));
     desc.fragmentShader.stage = rhi::ShaderStage::Fragment;
     desc.bindings.layouts = {sceneLayout, cameraLayout};
-    desc.bindings.pushConstantBytes = sizeof(uint32_t);   // DrawConstants { uint instanceIndex; } (gbuffer_io.glsl)
+    desc.bindings.pushConstantBytes = sizeof(shader::GBufferParams);
     // No culling: glass and thin surfaces are seen from both sides; the shader turns the normal.
     desc.cullMode = rhi::CullMode::None;
     desc.colorFormats = {GBufferFormats::kNormalRoughness, GBufferFormats::kAlbedoMetallic, GBufferFormats::kOptics,
@@ -77,8 +80,8 @@ GBuffer GBufferPass::addToGraph(rg::RenderGraph& graph, const FrameContext& fram
             cmd.setBindingSet(kSceneSet, sceneSet);
             cmd.setBindingSet(kCameraSet, cameraSet);
             for (auto [instance, indexCount] : draws) {
-                const uint32_t instanceIndex = instance;
-                cmd.setPushConstants(&instanceIndex, sizeof(instanceIndex));
+                const shader::GBufferParams push{instance};
+                cmd.setPushConstants(&push, sizeof(push));
                 cmd.draw(indexCount);
             }
             cmd.endRendering();

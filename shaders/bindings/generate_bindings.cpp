@@ -115,12 +115,19 @@ bool writeBinding(const Binding& b, std::string& glsl, std::string& hlsl, std::s
             hlsl += std::string(rw ? "RWByteAddressBuffer " : "ByteAddressBuffer ") + name + registerOf(b, rw ? 'u' : 't');
             hlsl += element + " " + name + "Load(uint i) { return " + hlslRawLoad(b, stride) + "; }\n";
             if (rw) hlsl += "void " + name + "Store(uint i, " + element + " v) { " + hlslRawStore(b, stride) + "; }\n";
+            if (rw && element == "uint") {
+                // A counter: <name>AtomicAdd(i, v) adds v to element i and returns the value before.
+                glsl += "uint " + name + "AtomicAdd(uint i, uint v) { return atomicAdd(" + name + "[i], v); }\n";
+                hlsl += "uint " + name + "AtomicAdd(uint i, uint v) { uint old; " + name +
+                        ".InterlockedAdd(i * 4u, v, old); return old; }\n";
+            }
             return true;
         }
         case Kind::SampledTexture: {
             const char* prefix = isUint(b.element) ? "u" : (isInt(b.element) ? "i" : "");
-            glsl += layoutHead(b) + " uniform " + prefix + "texture2D " + name + ";\n";
-            hlsl += "Texture2D<" + element + "> " + name + registerOf(b, 't');
+            const std::string dim = b.textureArray ? "2DArray" : "2D";
+            glsl += layoutHead(b) + " uniform " + prefix + "texture" + dim + " " + name + ";\n";
+            hlsl += "Texture" + dim + "<" + element + "> " + name + registerOf(b, 't');
             return true;
         }
         case Kind::StorageTexture: {

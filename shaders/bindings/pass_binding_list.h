@@ -3,6 +3,8 @@
 // GLSL and HLSL declarations of each. A pass adopting the scheme adds its declaration here and its
 // name to CAUSTICS_PASS_BINDINGS (shaders/bindings/CMakeLists.txt).
 #include "composite/composite_bindings.h"
+#include "caustic_maps/caustic_map_bindings.h"
+#include "caustic_maps/emitters_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
 #include "caustic_filter/atrous_bindings.h"
@@ -11,6 +13,9 @@
 #include "caustic_filter/temporal_bindings.h"
 #include "caustic_filter/tiles_bindings.h"
 #include "caustic_filter/variance_bindings.h"
+#include "direct_lighting/direct_lighting_bindings.h"
+#include "forward_trace/forward_bindings.h"
+#include "gbuffer/gbuffer_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 
 namespace caustics::shader_bindings {
@@ -18,6 +23,9 @@ namespace caustics::shader_bindings {
 inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
                                                      &kCausticAtrousBindings, &kCausticAtrousLastBindings, &kCausticVarianceBindings,
                                                      &kCausticFilterOutputBindings, &kCausticResolveBindings,
-                                                     &kCausticFilterTilesBindings, &kCausticTileListBindings, &kCausticTemporalBindings};
+                                                     &kCausticFilterTilesBindings, &kCausticTileListBindings, &kCausticTemporalBindings,
+                                                     &kForwardBindings, &kForwardFixedBindings, &kForwardFixed64Bindings,
+                                                     &kEmittersBindings, &kCausticMapBindings,
+                                                     &kDirectLightingBindings, &kGBufferBindings};
 
 }  // namespace caustics::shader_bindings

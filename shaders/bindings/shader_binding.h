@@ -32,6 +32,7 @@ struct Binding {
     std::string_view element;   // shared-dialect element type: float4, uint, uint2 or a struct name
     ImageFormat format = ImageFormat::None;   // storage textures only
     uint32_t stride = 0;        // storage buffers of a struct: its std430 size (built-in types: derived)
+    bool textureArray = false;  // sampled textures: a 2D array (GLSL texture2DArray / HLSL Texture2DArray)
 };
 
 struct PassBindings {

@@ -1,7 +1,8 @@
 #pragma once
-// Camera constants shared by every pass (one uniform/storage block; GLSL mirror in
-// shaders/vulkan/scene/camera.glsl, member for member). Only mat4/vec4/uvec4 members, so the
-// std140 and std430 layouts are identical and equal to the C++ layout (static_asserts below).
+// Camera constants shared by every pass (one uniform/storage block; the shaders' declaration is
+// shaders/common/camera.h, checked member for member in passes/module/scene_layout_check.cpp). Only
+// mat4/vec4/uvec4 members, so the std140 and std430 layouts are identical and equal to the C++ layout
+// (static_asserts below).
 //
 // Conventions: right-handed world, camera looks along `forward`; clip space is Vulkan's (x right,
 // y DOWN, z 0..1), i.e. proj already carries the y flip, so NDC (-1,-1) is the top-left image corner

@@ -25,10 +25,12 @@
 
 #include "caustics/caustic_importance.h"
 #include "caustics/scene/scene.h"
+#include "common/caustic_stats.h"
 
 namespace caustics {
 
-inline constexpr uint32_t kMaxCausticLights = 60;
+// Lights with a statistics slot (shaders/common/caustic_stats.h).
+using shader::kMaxCausticLights;
 // Layers of the map array: the emitter list packs the layer in 6 bits (emitter_list.glsl).
 inline constexpr uint32_t kMaxCausticLayers = 64;
 inline constexpr float kWideHalfAngle = 1.3089969f;   // 75 degrees

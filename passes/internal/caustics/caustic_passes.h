@@ -33,39 +33,29 @@
 #include "caustics/rhi/device.h"
 #include "caustics/scene/gpu_scene.h"
 #include "caustics/scene/scene.h"
+#include "common/caustic_stats.h"
 
 namespace caustics {
 
-// Layout of the small statistics buffer every frame writes (uint32 each): index
-// kStatRaysPerLight + l counts the forward rays launched for scene light l (skipped lights: 0).
-inline constexpr uint32_t kStatStoredHitAttempts = 0;  // diffuse hits offered to the hit buffer
-inline constexpr uint32_t kStatSplats = 1;             // first-type splats that passed the depth test
-inline constexpr uint32_t kStatGatherHits = 2;         // (hit, sphere) pairs accumulated
-inline constexpr uint32_t kStatSpheres = 3;            // backward hits that became spheres
-inline constexpr uint32_t kStatRaysPerLight = 4;
-// Cost counters (docs/caustics.md, "Cost that follows the caustic work"): forward ray segments traced
-// (traceRay calls, not paths), map texels that emit (specular 3x3 neighbourhood), map texels the
-// forward dispatch covers, and launches of the gather dispatch.
-inline constexpr uint32_t kStatForwardSegments = kStatRaysPerLight + kMaxCausticLights;
-inline constexpr uint32_t kStatEmitterTexels = kStatForwardSegments + 1;
-inline constexpr uint32_t kStatDispatchedTexels = kStatForwardSegments + 2;   // forward launches (texels x samples)
-inline constexpr uint32_t kStatGatherLaunches = kStatForwardSegments + 3;
-// Radiance contributions the HLSL float compare-and-swap loop gave up on after its bounded attempts
-// (shaders/d3d12/forward_trace/radiance_atomics.hlsli; docs/d3d12.md). Always 0 on Vulkan.
-inline constexpr uint32_t kStatAccumulationGiveUps = kStatForwardSegments + 4;
-// Second-type cost (docs/caustics.md, "Second-type cost"): specular camera pixels (the backward pass's
-// launches when dispatched indirectly), launches of the backward dispatch, spheres that found no slot
-// below the sphere capacity (kStatSpheres counts them too), and that capacity (AABB slots built).
-inline constexpr uint32_t kStatSpecularPixels = kStatForwardSegments + 5;
-inline constexpr uint32_t kStatBackwardLaunches = kStatForwardSegments + 6;
-inline constexpr uint32_t kStatSpheresDropped = kStatForwardSegments + 7;
-inline constexpr uint32_t kStatSphereCapacity = kStatForwardSegments + 8;
-// Fixed-point accumulation (docs/caustics.md, "Fixed point"): adds that pinned a radiance word at its
-// maximum (causticStatsWarnings names the exposure), and the frame's scale (float bits, written by
-// caustics.setup: the fixed-point word is value x this). Always 0 on the float path.
-inline constexpr uint32_t kStatSaturatedAdds = kStatForwardSegments + 9;
-inline constexpr uint32_t kStatFixedPointScale = kStatForwardSegments + 10;
-inline constexpr uint32_t kStatCount = kStatFixedPointScale + 1;
+// The slots of the small statistics buffer every frame writes, named once for the shaders and C++
+// (shaders/common/caustic_stats.h, where each is explained).
+using shader::kStatAccumulationGiveUps;
+using shader::kStatBackwardLaunches;
+using shader::kStatCount;
+using shader::kStatDispatchedTexels;
+using shader::kStatEmitterTexels;
+using shader::kStatFixedPointScale;
+using shader::kStatForwardSegments;
+using shader::kStatGatherHits;
+using shader::kStatGatherLaunches;
+using shader::kStatRaysPerLight;
+using shader::kStatSaturatedAdds;
+using shader::kStatSpecularPixels;
+using shader::kStatSphereCapacity;
+using shader::kStatSpheres;
+using shader::kStatSpheresDropped;
+using shader::kStatSplats;
+using shader::kStatStoredHitAttempts;
 
 // One stored forward diffuse hit (std430, 64 bytes; GLSL mirror CausticHitRecord in
 // forward_trace/caustic_hit.glsl). It carries the photon's flux, its incoming direction and the

@@ -1,7 +1,7 @@
 #pragma once
 // What every pass of one frame receives from CausticsModule: the scene (CPU + GPU + its binding set,
 // set 0 in every pass), the camera constants and their binding set (set 1 in every pass: binding 0 =
-// uniform CameraConstants, shaders/vulkan/scene/camera.glsl), the image size and the settings.
+// uniform CameraConstants, shaders/common/camera.h), the image size and the settings.
 #include <cstdint>
 
 #include "caustics/camera_constants.h"

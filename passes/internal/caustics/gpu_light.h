@@ -1,5 +1,6 @@
 #pragma once
-// Lights as the shaders see them (GLSL mirror: struct GpuLight in shaders/vulkan/scene/scene.glsl).
+// Lights as the shaders see them (struct GpuLight in shaders/common/scene.h, checked member for member
+// in passes/module/scene_layout_check.cpp).
 // KHR_lights_punctual units: point/spot `intensity` = colour x candela, directional = colour x lux.
 #include <cstddef>
 #include <cstdint>

@@ -9,7 +9,7 @@ ByteAddressBuffer hits : register(t2, space0);
 RWByteAddressBuffer stats : register(u3, space0);
 #define RADIANCE_REGISTER u4
 #define RADIANCE_SPACE space0
-#include "forward_trace/radiance_atomics.hlsli"
+#include "forward_trace/radiance_atomics.h"
 
 [shader("anyhit")]
 void main(inout GatherPayload payload, in SphereAttributes attribs) {

@@ -9,7 +9,7 @@ layout(set = 0, binding = 2, std430) readonly buffer Hits { CausticHitRecord hit
 layout(set = 0, binding = 3, std430) buffer Stats { uint stats[]; };
 #define RADIANCE_SET 0
 #define RADIANCE_BINDING 4
-#include "forward_trace/radiance_atomics.glsl"
+#include "forward_trace/radiance_atomics.h"
 layout(location = 0) rayPayloadInEXT uint hitIndex;
 void main() {
     CausticSphere s = spheres[gl_PrimitiveID];

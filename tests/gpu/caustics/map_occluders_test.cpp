@@ -72,9 +72,9 @@ TEST_F(MapOccluders, WithAndWithoutOccludersTheCausticEnergyIsTheSameAndTheShade
     // Without the sheet in the map, the texels it shades emit too (about twice as many)...
     EXPECT_GT(withoutTexels, withTexels + withTexels / 2);
     // ... and their photons end on the sheet: the same photons reach the floor. Each texel's photon
-    // has its own random stream (forward_body.glsl), so the stored hits are the same ones; measured
-    // 2026-12-01: equal flux and image sums to the last printed digit. Bound: float-atomic summation
-    // order of the splats, 1e-5 relative.
+    // has its own random stream (passes/forward_trace/shaders/forward.h), so the stored hits are the
+    // same ones; measured 2026-12-01: equal flux and image sums to the last printed digit. Bound:
+    // float-atomic summation order of the splats, 1e-5 relative.
     ASSERT_GT(with->hits.size(), 200u);
     EXPECT_EQ(with->hits.size(), without->hits.size());
     EXPECT_NEAR(withoutFlux, withFlux, 1e-6 * withFlux);

@@ -21,7 +21,8 @@ protected:
     }
 
     // Checks the forward trace with the first match of `pattern` in `file` (HLSL: the embedded text of
-    // the ray-generation shader; GLSL: a file under shaders/vulkan) replaced by `replacement`.
+    // the ray-generation shader; GLSL: a file the entry includes, e.g. its generated bindings) replaced
+    // by `replacement`.
     std::vector<std::string> checkWithEdit(ShaderLanguage language, const std::string& file, const std::string& pattern,
                                            const std::string& replacement) {
         bool edited = false;
@@ -91,9 +92,11 @@ TEST_F(PlantedMismatch, HlslRegisterClassOfTheWrongTypeIsReported) {
 }
 
 TEST_F(PlantedMismatch, GlslBindingNumberChangedIsReported) {
-    auto errors = checkWithEdit(ShaderLanguage::Glsl, "forward_trace/forward_body.glsl", "binding = 6, std430\\) buffer Hits", "binding = 2, std430) buffer Hits");
+    // The forward pass's GLSL declarations are generated (forward_bindings.h -> bindings/forward.h).
+    auto errors = checkWithEdit(ShaderLanguage::Glsl, "bindings/forward.h", "binding = 6, std430\\) buffer hitsBuffer",
+                                "binding = 2, std430) buffer hitsBuffer");
     // Slot 2 exists in the C++ layout but holds another kind of binding than the writable hit buffer.
-    EXPECT_TRUE(anyContains(errors, "'Hits' (set 1, slot 2, StorageBufferRW): the C++ layout 1 declares slot 2 as"))
+    EXPECT_TRUE(anyContains(errors, "'hitsBuffer' (set 1, slot 2, StorageBufferRW): the C++ layout 1 declares slot 2 as"))
         << ::testing::PrintToString(errors);
 }
 

@@ -5,8 +5,12 @@
 #include <vector>
 
 #include "composite/shaders/composite.h"
+#include "direct_lighting/shaders/direct_light.h"
 #include "caustic_maps/shaders/grid_from_count.h"
+#include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/photon_plan.h"
+#include "forward_trace/shaders/forward.h"
+#include "gbuffer/shaders/gbuffer.h"
 #include "gbuffer/shaders/remap_object_ids.h"
 
 namespace caustics::shader {
@@ -119,6 +123,114 @@ TEST(PhotonPlanBody, ALayerWithoutABudgetEmitsRaysPerTexelAndLaunchRangesFollowE
     EXPECT_EQ(gPlans[2].launchOffset, 150u);
     EXPECT_EQ(gPlans[2].launches, 12u);
     EXPECT_EQ(gArgs, (std::vector<uint>{162, 1, 1}));
+}
+
+// The forward trace's layer search reads the photon plan's launch ranges (plansLoad, as above).
+TEST(ForwardBody, ALaunchFindsTheLayerWhoseRangeHoldsItAndLaunchesPastTheLastIdle) {
+    planThreeLayers();   // ranges [0, 150), empty, [150, 162)
+    EXPECT_EQ(forwardLayerOf(0u, 3u), 0);
+    EXPECT_EQ(forwardLayerOf(149u, 3u), 0);
+    EXPECT_EQ(forwardLayerOf(150u, 3u), 2);
+    EXPECT_EQ(forwardLayerOf(161u, 3u), 2);
+    EXPECT_EQ(forwardLayerOf(162u, 3u), -1);   // the direct dispatch's upper bound
+}
+
+CausticMap perspectiveMap() {
+    CausticMap m{};
+    m.origin = float3(0.0f, 2.0f, 0.0f);
+    m.right = float3(1.0f, 0.0f, 0.0f);
+    m.up = float3(0.0f, 0.0f, -1.0f);
+    m.forward = float3(0.0f, -1.0f, 0.0f);
+    m.extent = 1.0f;   // tan 45 degrees
+    m.intensity = float3(10.0f, 5.0f, 1.0f);
+    m.cosOuter = -2.0f;   // no cone
+    return m;
+}
+
+// One photon at the centre of every texel of an N x N map carries the map's whole flux, intensity x
+// the frustum's solid angle (common/emission.h; docs/physics.md): the texel solid angles are exact.
+// Bound 1e-5: float sums of 64 terms, measured 2.4e-7 (x) and 1.2e-7 (z) relative.
+TEST(ForwardBody, PerspectivePhotonsOfAllTexelsCarryTheFrustumsFlux) {
+    const CausticMap m = perspectiveMap();
+    const float n = 8.0f;
+    float3 total(0.0f);
+    for (uint y = 0; y < 8u; ++y)
+        for (uint x = 0; x < 8u; ++x) {
+            ForwardPhoton p = emitPhoton(m, float2(x, y) + 0.5f, uint2(x, y), n, 1.0f);
+            EXPECT_NEAR(length(p.dir), 1.0f, 1e-6f);
+            EXPECT_EQ(p.origin, m.origin);
+            total += p.flux;
+        }
+    const float omega = perspectiveFrustumSolidAngle(m.extent);
+    EXPECT_NEAR(total.x / (m.intensity.x * omega), 1.0f, 1e-5f);
+    EXPECT_NEAR(total.z / (m.intensity.z * omega), 1.0f, 1e-5f);
+    // Two rays per texel carry half the flux each.
+    EXPECT_FLOAT_EQ(emitPhoton(m, float2(3.5f), uint2(3), n, 2.0f).flux.x, 0.5f * emitPhoton(m, float2(3.5f), uint2(3), n, 1.0f).flux.x);
+}
+
+TEST(ForwardBody, OrthographicPhotonsLeaveTheMapPlaneAlongItsAxisWithTheTexelsIlluminance) {
+    CausticMap m = perspectiveMap();
+    m.orthographic = 1u;
+    m.extent = 2.0f;   // half-extent, metres
+    ForwardPhoton centre = emitPhoton(m, float2(4.0f), uint2(4), 8.0f, 1.0f);
+    EXPECT_EQ(centre.origin, m.origin);
+    EXPECT_EQ(centre.dir, m.forward);
+    EXPECT_FLOAT_EQ(centre.flux.x, m.intensity.x * 0.25f);   // lux x (4 m / 8)^2
+    ForwardPhoton corner = emitPhoton(m, float2(0.0f), uint2(0), 8.0f, 1.0f);
+    EXPECT_EQ(corner.origin, m.origin - 2.0f * m.right - 2.0f * m.up);
+}
+
+// The G-buffer depth test allows 0.1 % plus the depth change across one pixel's footprint at the
+// view angle: 1.5 x (2 tan(fov/2) / height) x tan(view angle).
+TEST(ForwardBody, SplatDepthToleranceGrowsWithTheViewAngle) {
+    PinholeCamera cam = makePinholeCamera(float3(0.0f), float3(0.0f, 0.0f, -1.0f), float3(0.0f, 1.0f, 0.0f),
+                                          2.0f * atan(1.0f), 100.0f, 100.0f);   // footprint 0.02
+    EXPECT_TRUE(splatDepthMatches(cam, 10.009f, 10.0f, 1.0f));
+    EXPECT_FALSE(splatDepthMatches(cam, 10.011f, 10.0f, 1.0f));
+    EXPECT_TRUE(splatDepthMatches(cam, 10.5f, 10.0f, 0.5f));    // tolerance 10 x (1e-3 + 0.03 x 1.732) = 0.53
+    EXPECT_FALSE(splatDepthMatches(cam, 10.55f, 10.0f, 0.5f));
+    EXPECT_FALSE(splatDepthMatches(cam, 9.4f, 10.0f, 0.5f));
+}
+
+// A spot light's map texel emits unless its whole footprint lies outside the outer cone.
+TEST(EmittersBody, OnlyTexelsWhollyOutsideTheSpotConeAreSkipped) {
+    CausticMap m = perspectiveMap();   // 90 degree frustum, 8 x 8 texels
+    m.spotAxis = m.forward;
+    m.cosOuter = cos(30.0f * kPi / 180.0f);
+    EXPECT_FALSE(texelOutsideSpotCone(m, uint2(3, 4), 8.0f));   // 10 degrees off the axis
+    EXPECT_TRUE(texelOutsideSpotCone(m, uint2(0, 0), 8.0f));    // the corner, 51 degrees off
+    // Texel (1, 4)'s centre is 32.5 degrees off the axis, within its 8.5 degree radius of the cone's edge.
+    EXPECT_FALSE(texelOutsideSpotCone(m, uint2(1, 4), 8.0f));
+    m.cosOuter = -2.0f;   // no cone
+    EXPECT_FALSE(texelOutsideSpotCone(m, uint2(0, 0), 8.0f));
+}
+
+// KHR_lights_punctual at a point: E = I / d^2 for point and spot lights, with the range window
+// saturate(1 - (d / range)^4)^2; a directional light's lux arrive unchanged.
+TEST(DirectLightBody, PunctualLightsFallOffWithTheSquareOfTheDistanceInsideTheirRange) {
+    GpuLight point{};
+    point.position = float3(0.0f, 2.0f, 0.0f);
+    point.type = kLightPoint;
+    point.intensity = float3(8.0f, 4.0f, 0.0f);
+    LightSample s = sampleLight(point, float3(0.0f));
+    EXPECT_FLOAT_EQ(s.distance, 2.0f);
+    EXPECT_EQ(s.toLight, float3(0.0f, 1.0f, 0.0f));
+    EXPECT_FLOAT_EQ(s.irradiance.x, 2.0f);
+    point.range = 4.0f;   // (1 - (2 / 4)^4)^2 = (15 / 16)^2
+    EXPECT_FLOAT_EQ(sampleLight(point, float3(0.0f)).irradiance.x, 2.0f * (15.0f / 16.0f) * (15.0f / 16.0f));
+    EXPECT_EQ(sampleLight(point, float3(0.0f, -3.0f, 0.0f)).irradiance.x, 0.0f);   // beyond the range
+    GpuLight sun{};
+    sun.type = kLightDirectional;
+    sun.direction = float3(0.0f, -1.0f, 0.0f);
+    sun.intensity = float3(3.0f);
+    EXPECT_EQ(sampleLight(sun, float3(5.0f)).irradiance, float3(3.0f));
+    EXPECT_EQ(sampleLight(sun, float3(5.0f)).toLight, float3(0.0f, 1.0f, 0.0f));
+}
+
+// The G-buffer stores the side of a surface that is seen, whatever its winding.
+TEST(GBufferBody, NormalIsUnitAndFacesTheViewerWhateverTheWinding) {
+    EXPECT_EQ(gbufferFacingNormal(float3(0.0f, 0.0f, -2.0f), float3(0.0f, 0.0f, 1.0f)), float3(0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(gbufferFacingNormal(float3(0.0f, 3.0f, 0.0f), float3(0.0f, 1.0f, 1.0f)), float3(0.0f, 1.0f, 0.0f));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The host camera contract (passes/include/caustics/camera_view.h): projections with jitter, reversed
 // Z and an infinite far plane are read back exactly, and their pixel mapping is the shaders' pinhole
-// model shifted by the jitter (shaders/vulkan/scene/camera.glsl, cameraProject).
+// model shifted by the jitter (shaders/common/camera.h, cameraProject).
 #include <gtest/gtest.h>
 
 #include <cmath>
