@@ -9,6 +9,22 @@ ProcAddrLog gLog;
 PFN_vkGetDeviceProcAddr gRealGetDeviceProcAddr = nullptr;
 PFN_vkCreateBuffer gRealCreateBuffer = nullptr;
 PFN_vkCmdDispatch gRealCmdDispatch = nullptr;
+PFN_vkQueueSubmit2 gRealQueueSubmit2 = nullptr;
+PFN_vkQueueSubmit gRealQueueSubmit = nullptr;
+PFN_vkCmdUpdateBuffer gRealCmdUpdateBuffer = nullptr;
+PFN_vkCmdCopyBuffer gRealCmdCopyBuffer = nullptr;
+
+VKAPI_ATTR void VKAPI_CALL countingCmdUpdateBuffer(VkCommandBuffer cmd, VkBuffer buffer, VkDeviceSize offset,
+                                                   VkDeviceSize bytes, const void* data) {
+    gLog.bufferUploadBytes += bytes;
+    gRealCmdUpdateBuffer(cmd, buffer, offset, bytes, data);
+}
+
+VKAPI_ATTR void VKAPI_CALL countingCmdCopyBuffer(VkCommandBuffer cmd, VkBuffer src, VkBuffer dst, uint32_t count,
+                                                 const VkBufferCopy* regions) {
+    for (uint32_t i = 0; i < count; ++i) gLog.bufferUploadBytes += regions[i].size;
+    gRealCmdCopyBuffer(cmd, src, dst, count, regions);
+}
 
 VKAPI_ATTR VkResult VKAPI_CALL countingCreateBuffer(VkDevice device, const VkBufferCreateInfo* info,
                                                     const VkAllocationCallbacks* allocator, VkBuffer* buffer) {
@@ -21,6 +37,18 @@ VKAPI_ATTR void VKAPI_CALL countingCmdDispatch(VkCommandBuffer cmd, uint32_t x, 
     gRealCmdDispatch(cmd, x, y, z);
 }
 
+VKAPI_ATTR VkResult VKAPI_CALL countingQueueSubmit2(VkQueue queue, uint32_t count, const VkSubmitInfo2* submits,
+                                                    VkFence fence) {
+    ++gLog.queueSubmitCalls;
+    return gRealQueueSubmit2(queue, count, submits, fence);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL countingQueueSubmit(VkQueue queue, uint32_t count, const VkSubmitInfo* submits,
+                                                   VkFence fence) {
+    ++gLog.queueSubmitCalls;
+    return gRealQueueSubmit(queue, count, submits, fence);
+}
+
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL recordingGetDeviceProcAddr(VkDevice device, const char* name) {
     gLog.deviceNames.insert(name);
     const PFN_vkVoidFunction real = gRealGetDeviceProcAddr(device, name);
@@ -31,6 +59,22 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL recordingGetDeviceProcAddr(VkDevice dev
     if (real && std::strcmp(name, "vkCmdDispatch") == 0) {
         gRealCmdDispatch = reinterpret_cast<PFN_vkCmdDispatch>(real);
         return reinterpret_cast<PFN_vkVoidFunction>(countingCmdDispatch);
+    }
+    if (real && std::strcmp(name, "vkQueueSubmit2") == 0) {
+        gRealQueueSubmit2 = reinterpret_cast<PFN_vkQueueSubmit2>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(countingQueueSubmit2);
+    }
+    if (real && std::strcmp(name, "vkCmdUpdateBuffer") == 0) {
+        gRealCmdUpdateBuffer = reinterpret_cast<PFN_vkCmdUpdateBuffer>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(countingCmdUpdateBuffer);
+    }
+    if (real && std::strcmp(name, "vkCmdCopyBuffer") == 0) {
+        gRealCmdCopyBuffer = reinterpret_cast<PFN_vkCmdCopyBuffer>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(countingCmdCopyBuffer);
+    }
+    if (real && std::strcmp(name, "vkQueueSubmit") == 0) {
+        gRealQueueSubmit = reinterpret_cast<PFN_vkQueueSubmit>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(countingQueueSubmit);
     }
     return real;
 }
