@@ -150,8 +150,9 @@ TEST_F(HostEngine, OwnTlasAndSceneTablesGetTheStandaloneModulesCausticImage) {
 // docs/embedding.md "Hand-over states": the host writes its material table in the same command buffer
 // (vkCmdUpdateBuffer after zeros from the CPU) with no barrier of its own and declares the tables
 // CopyDest; the module's barrier orders its traces after the write. Synchronization validation is on:
-// without that barrier (scene.host_tables) it reports the read-after-write hazard. The image must equal
-// the host whose table was written from the CPU (same bound as above; the tables hold the same rows).
+// without that barrier (scene.host_tables) it reports the read-after-write hazard (checked once by
+// removing the pass: 1 message). The image must equal the host whose table was written from the CPU:
+// measured relative L1 0 (same rows, same seed); bound kHostBound as above.
 TEST_F(HostEngine, HostTablesWrittenInItsCommandBufferAreMadeVisibleByTheModulesBarrier) {
     const scene::Scene scene = spotSphereScene();
     const CameraView camera = cameraViewMatrices(spotSphereCamera(), kSize, kSize);

@@ -49,34 +49,27 @@ VKAPI_ATTR VkResult VKAPI_CALL countingQueueSubmit(VkQueue queue, uint32_t count
     return gRealQueueSubmit(queue, count, submits, fence);
 }
 
+// Hands out `wrapper` for `name` when it is `wanted`, keeping the driver's function in `saved`.
+template <typename Fn>
+bool intercept(const char* name, const char* wanted, PFN_vkVoidFunction real, Fn& saved, Fn wrapper,
+               PFN_vkVoidFunction& out) {
+    if (!real || std::strcmp(name, wanted) != 0) return false;
+    saved = reinterpret_cast<Fn>(real);
+    out = reinterpret_cast<PFN_vkVoidFunction>(wrapper);
+    return true;
+}
+
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL recordingGetDeviceProcAddr(VkDevice device, const char* name) {
     gLog.deviceNames.insert(name);
     const PFN_vkVoidFunction real = gRealGetDeviceProcAddr(device, name);
-    if (real && std::strcmp(name, "vkCreateBuffer") == 0) {
-        gRealCreateBuffer = reinterpret_cast<PFN_vkCreateBuffer>(real);
-        return reinterpret_cast<PFN_vkVoidFunction>(countingCreateBuffer);
-    }
-    if (real && std::strcmp(name, "vkCmdDispatch") == 0) {
-        gRealCmdDispatch = reinterpret_cast<PFN_vkCmdDispatch>(real);
-        return reinterpret_cast<PFN_vkVoidFunction>(countingCmdDispatch);
-    }
-    if (real && std::strcmp(name, "vkQueueSubmit2") == 0) {
-        gRealQueueSubmit2 = reinterpret_cast<PFN_vkQueueSubmit2>(real);
-        return reinterpret_cast<PFN_vkVoidFunction>(countingQueueSubmit2);
-    }
-    if (real && std::strcmp(name, "vkCmdUpdateBuffer") == 0) {
-        gRealCmdUpdateBuffer = reinterpret_cast<PFN_vkCmdUpdateBuffer>(real);
-        return reinterpret_cast<PFN_vkVoidFunction>(countingCmdUpdateBuffer);
-    }
-    if (real && std::strcmp(name, "vkCmdCopyBuffer") == 0) {
-        gRealCmdCopyBuffer = reinterpret_cast<PFN_vkCmdCopyBuffer>(real);
-        return reinterpret_cast<PFN_vkVoidFunction>(countingCmdCopyBuffer);
-    }
-    if (real && std::strcmp(name, "vkQueueSubmit") == 0) {
-        gRealQueueSubmit = reinterpret_cast<PFN_vkQueueSubmit>(real);
-        return reinterpret_cast<PFN_vkVoidFunction>(countingQueueSubmit);
-    }
-    return real;
+    PFN_vkVoidFunction out = real;
+    intercept(name, "vkCreateBuffer", real, gRealCreateBuffer, countingCreateBuffer, out) ||
+        intercept(name, "vkCmdDispatch", real, gRealCmdDispatch, countingCmdDispatch, out) ||
+        intercept(name, "vkQueueSubmit2", real, gRealQueueSubmit2, countingQueueSubmit2, out) ||
+        intercept(name, "vkQueueSubmit", real, gRealQueueSubmit, countingQueueSubmit, out) ||
+        intercept(name, "vkCmdUpdateBuffer", real, gRealCmdUpdateBuffer, countingCmdUpdateBuffer, out) ||
+        intercept(name, "vkCmdCopyBuffer", real, gRealCmdCopyBuffer, countingCmdCopyBuffer, out);
+    return out;
 }
 
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL recordingGetInstanceProcAddr(VkInstance instance, const char* name) {
