@@ -18,6 +18,7 @@ static_assert(kMaxCausticLights <= 64);
 
 void addEmitterPass(rg::RenderGraph& graph, CausticFrame& f) {
     graph.addPass("caustics.emitters", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         const uint32_t n = f.in->settings.mapResolution;
         const uint32_t layers = uint32_t(f.plan.maps.size());
         f.maps = b.read(f.maps, rg::Access::SampledRead);

@@ -13,6 +13,7 @@ rg::RgBuffer addGridFromCountPass(rg::RenderGraph& graph, CausticFrame& f, const
                                   uint32_t cap, uint32_t gateSlot) {
     rg::RgBuffer grid;
     graph.addPass(name, [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         f.stats = b.read(f.stats, rg::Access::SampledRead);
         grid = b.write(b.createBuffer(name, rhi::BufferDesc().setByteSize(12).setUsage(rhi::BufferUsage::Storage)
                                                 .setDebugName(name)),

@@ -28,6 +28,7 @@ static_assert(sizeof(CausticMapGpu) == 4 * shader::kCausticMapWords &&
 
 void addPhotonPlanPass(rg::RenderGraph& graph, CausticFrame& f) {
     graph.addPass("caustics.photonPlan", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         f.maps = b.read(f.maps, rg::Access::SampledRead);
         f.layerPlans = b.write(f.layerPlans, rg::Access::StorageReadWrite);
         f.forwardArgs = b.write(f.forwardArgs, rg::Access::StorageWrite);

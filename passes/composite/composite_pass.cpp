@@ -33,6 +33,7 @@ CompositeOutputs CompositePass::addToGraph(rg::RenderGraph& graph, const GBuffer
                                            rg::RgTexture caustics, const CompositeParams& params) const {
     CompositeOutputs out;
     graph.addPass("composite", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         rg::RgTexture d = b.read(direct);
         bool hasCaustics = caustics.valid();
         rg::RgTexture c = hasCaustics ? b.read(caustics) : d;

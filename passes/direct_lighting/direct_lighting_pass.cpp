@@ -45,6 +45,7 @@ rg::RgTexture DirectLightingPass::addToGraph(rg::RenderGraph& graph, const Frame
                                              const GBuffer& gbuffer) const {
     rg::RgTexture out;
     graph.addPass("direct_lighting", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::RayTracing);
         rg::RgTexture normal = b.read(gbuffer.normalRoughness, rg::Access::SampledRead);
         rg::RgTexture albedo = b.read(gbuffer.albedoMetallic, rg::Access::SampledRead);
         rg::RgTexture depth = b.read(gbuffer.linearDepth, rg::Access::SampledRead);

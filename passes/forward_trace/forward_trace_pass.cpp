@@ -16,6 +16,7 @@ namespace caustics {
 
 void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
     graph.addPass("caustics.forward", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::RayTracing);
         const CausticsSettings& s = f.in->settings;
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         if (f.in->sceneTlas.valid()) b.read(f.in->sceneTlas);

@@ -30,6 +30,7 @@ rg::RgTexture ObjectIdRemapPass::addToGraph(rg::RenderGraph& graph, rg::RgTextur
                                             uint32_t pairCount, uint32_t width, uint32_t height) const {
     rg::RgTexture out;
     graph.addPass("gbuffer.object_ids", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         rg::RgTexture ids = b.read(hostIds);
         rg::RgBuffer pairs = b.read(map, rg::Access::SampledRead);
         out = b.write(b.createTexture("module objectId",

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "caustics/host_scene.h"
@@ -74,6 +75,13 @@ Status checkHostSceneTables(const HostSceneTables& t, const scene::Scene& scene)
     for (const auto& [buffer, field] : buffers)
         if (*buffer && !rhi::hasAny((*buffer)->desc().usage, rhi::BufferUsage::Storage))
             return makeError(tableName(field, *buffer) + " lacks Storage usage: the hit shaders read it as a storage buffer");
+    constexpr rhi::ResourceState kTableStates[] = {
+        rhi::ResourceState::ShaderResource, rhi::ResourceState::UnorderedAccess, rhi::ResourceState::CopyDest,
+        rhi::ResourceState::CopySource, rhi::ResourceState::AccelStructBuildInput, rhi::ResourceState::Common};
+    if (std::find(std::begin(kTableStates), std::end(kTableStates), t.tablesState) == std::end(kTableStates))
+        return makeError(std::string("HostSceneTables::tablesState ") + rhi::resourceStateName(t.tablesState) +
+                         " is not a state a table buffer can be handed over in (ShaderResource, UnorderedAccess, "
+                         "CopyDest, CopySource, AccelStructBuildInput or Common; docs/embedding.md \"Hand-over states\")");
     const int geometryGiven = bool(t.positions) + bool(t.vertices) + bool(t.indices);
     if (geometryGiven != 0 && geometryGiven != 3)
         return makeError("HostSceneTables: positions, vertices and indices come as a set (the instance rows' "

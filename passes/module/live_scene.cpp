@@ -133,6 +133,27 @@ SceneTables effectiveTables(const SceneTables& own, const HostSceneTables& host)
     return t;
 }
 
+// The host's tables enter the graph in the state the host declares (HostSceneTables::tablesState):
+// this pass reads them as ShaderResource, so the graph's barrier before it makes the host's writes
+// visible to every shader stage of the passes after it (it declares no kind of work, so the barrier
+// blocks all of them), and the final barrier returns them to the host's state once every pass has read
+// them (docs/embedding.md "Hand-over states"). The tracing passes bind them through the scene
+// bindings, which the graph does not see; this pass is where the graph does.
+void addHostTableHandOver(rg::RenderGraph& graph, const HostSceneTables& host) {
+    const std::pair<const rhi::BufferHandle*, const char*> tables[] = {
+        {&host.positions, "host.positions"}, {&host.vertices, "host.vertices"}, {&host.indices, "host.indices"},
+        {&host.materials, "host.materials"}, {&host.instances, "host.instances"}};
+    std::vector<rg::RgBuffer> imported;
+    for (const auto& [buffer, name] : tables)
+        if (*buffer) imported.push_back(graph.importBuffer(name, *buffer, host.tablesState, host.tablesState));
+    if (imported.empty()) return;
+    graph.addPass("scene.host_tables", [&](rg::PassBuilder& b) {
+        for (rg::RgBuffer table : imported) b.read(table, rg::Access::SampledRead);
+        b.setSideEffects();
+        return [](rg::PassContext&) {};
+    });
+}
+
 }  // namespace
 
 Result<LiveScene> LiveScene::create(rhi::IDevice& device, const scene::GpuScene& gpuScene, uint32_t framesInFlight) {
@@ -150,6 +171,10 @@ Result<LiveSceneFrame> LiveScene::addUpdatePass(rg::RenderGraph& graph, const sc
                                                 const HostSceneTables& host) {
     if (slot >= slots_.size()) return makeError("LiveScene: frame slot " + std::to_string(slot) + " out of range");
     CAUSTICS_CHECK(checkHostSceneTables(host, scene));
+    if (!gpuScene_->positions && !host.positions)
+        return makeError("CausticsModule: the GpuScene was made with uploadGeometry = false, so "
+                         "FrameInputs::hostScene must hand in positions, vertices and indices (docs/embedding.md "
+                         "\"Host scene tables\")");
     const bool buildTlas = !host.tlas;
     CAUSTICS_TRY(auto packed, packFrame(scene, *gpuScene_, buildTlas));
     std::shared_ptr<Slot> s = slots_[slot];
@@ -171,6 +196,7 @@ Result<LiveSceneFrame> LiveScene::addUpdatePass(rg::RenderGraph& graph, const sc
     frame.tlas = buildTlas ? graph.importAccelStruct("scene.tlas", s->tables.tlas, rhi::ResourceState::AccelStructRead,
                                                      rhi::ResourceState::AccelStructRead)
                            : graph.importAccelStruct("host.tlas", host.tlas, host.tlasState, host.tlasState);
+    addHostTableHandOver(graph, host);
     auto data = std::make_shared<PackedFrame>(std::move(packed));
     graph.addPass("scene.update", [&](rg::PassBuilder& b) {
         if (buildTlas) frame.tlas = b.write(frame.tlas, rg::Access::AccelStructBuild);

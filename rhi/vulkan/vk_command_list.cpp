@@ -126,12 +126,15 @@ void maskUnsupported(const Capabilities& caps, VkStateInfo& s) {
 }
 
 // Source and destination scopes of an image or buffer barrier. An aliasing barrier (memory another
-// resource used before, or an earlier frame) waits for all earlier commands, like D3D12's aliasing
-// barrier; the render graph asks for it.
+// resource used before, or an earlier frame) waits for every stage of the work that used that memory
+// (`beforeStages`; all commands when not said), like D3D12's aliasing barrier; the render graph asks for it.
 template <typename Barrier>
-void setStagesAndAccess(Barrier& barrier, const VkStateInfo& src, const VkStateInfo& dst, bool aliasing) {
-    barrier.srcStageMask = aliasing ? VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT : src.stages;
-    barrier.srcAccessMask = aliasing ? VK_ACCESS_2_MEMORY_WRITE_BIT : src.access;
+void setStagesAndAccess(const Capabilities& caps, Barrier& barrier, const VkStateInfo& src, const VkStateInfo& dst,
+                        bool aliasing, PipelineStages beforeStages) {
+    VkStateInfo earlierUse{stagesOfWork(beforeStages), VK_ACCESS_2_MEMORY_WRITE_BIT};
+    maskUnsupported(caps, earlierUse);
+    barrier.srcStageMask = aliasing ? earlierUse.stages : src.stages;
+    barrier.srcAccessMask = aliasing ? earlierUse.access : src.access;
     barrier.dstStageMask = dst.stages;
     barrier.dstAccessMask = dst.access;
 }
@@ -147,11 +150,12 @@ void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::
         VulkanTexture* t = toVk(b.texture);
         if (!t) continue;
         const bool depth = formatInfo(t->desc().format).isDepth;
-        VkStateInfo src = translateState(b.before, depth), dst = translateState(b.after, depth);
+        VkStateInfo src = translateState(b.before, depth, b.beforeStages);
+        VkStateInfo dst = translateState(b.after, depth, b.afterStages);
         maskUnsupported(caps, src);
         maskUnsupported(caps, dst);
         VkImageMemoryBarrier2 ib{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-        setStagesAndAccess(ib, src, dst, b.aliasing);
+        setStagesAndAccess(caps, ib, src, dst, b.aliasing, b.beforeStages);
         ib.oldLayout = b.before == ResourceState::Undefined ? VK_IMAGE_LAYOUT_UNDEFINED : src.layout;
         ib.newLayout = dst.layout;
         ib.srcQueueFamilyIndex = ib.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
@@ -164,11 +168,12 @@ void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::
     for (const BufferBarrier& b : buffers) {
         VulkanBuffer* buf = toVk(b.buffer);
         if (!buf) continue;
-        VkStateInfo src = translateState(b.before), dst = translateState(b.after);
+        VkStateInfo src = translateState(b.before, false, b.beforeStages);
+        VkStateInfo dst = translateState(b.after, false, b.afterStages);
         maskUnsupported(caps, src);
         maskUnsupported(caps, dst);
         VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-        setStagesAndAccess(bb, src, dst, b.aliasing);
+        setStagesAndAccess(caps, bb, src, dst, b.aliasing, b.beforeStages);
         bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         bb.buffer = buf->handle();
         bb.offset = 0;
@@ -178,7 +183,8 @@ void VulkanCommandList::barriers(std::span<const TextureBarrier> textures, std::
     // Acceleration structures are ordered with a global memory barrier (the AS is not a buffer the
     // RHI exposes; VK_KHR_acceleration_structure "Acceleration Structure Synchronization").
     for (const AccelStructBarrier& b : accelStructs) {
-        VkStateInfo src = translateState(b.before), dst = translateState(b.after);
+        VkStateInfo src = translateState(b.before, false, b.beforeStages);
+        VkStateInfo dst = translateState(b.after, false, b.afterStages);
         maskUnsupported(caps, src);
         maskUnsupported(caps, dst);
         VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};

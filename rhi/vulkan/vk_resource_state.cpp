@@ -66,7 +66,26 @@ const BitInfo kBits[] = {
 
 }  // namespace
 
-VkStateInfo translateState(ResourceState state, bool isDepth) {
+VkPipelineStageFlags2 stagesOfWork(PipelineStages work) {
+    if (work == PipelineStages::None) return VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkPipelineStageFlags2 out = VK_PIPELINE_STAGE_2_NONE;
+    // Vulkan spec 7.1.2 "Pipeline Stages": the stages each kind of command executes.
+    if (hasAny(work, PipelineStages::Raster))
+        out |= VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT |
+               VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+               VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT |
+               VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+    if (hasAny(work, PipelineStages::Compute))
+        out |= VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    if (hasAny(work, PipelineStages::RayTracing))
+        out |= VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR;
+    if (hasAny(work, PipelineStages::Copy)) out |= VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+    if (hasAny(work, PipelineStages::AccelStructBuild))
+        out |= VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR;   // copies too (no maintenance1)
+    return out;
+}
+
+VkStateInfo translateState(ResourceState state, bool isDepth, PipelineStages work) {
     VkStateInfo out;
     if (state == ResourceState::Undefined) {
         // Nothing to wait for; contents are discarded by the layout transition from UNDEFINED.
@@ -76,7 +95,8 @@ VkStateInfo translateState(ResourceState state, bool isDepth) {
     int bestPriority = -1;
     for (const BitInfo& b : kBits) {
         if (!hasAny(state, b.bit)) continue;
-        out.stages |= b.stages;
+        const VkPipelineStageFlags2 narrowed = work == PipelineStages::None ? b.stages : b.stages & stagesOfWork(work);
+        out.stages |= narrowed ? narrowed : b.stages;
         out.access |= b.access;
         if (b.layout != VK_IMAGE_LAYOUT_UNDEFINED && b.layoutPriority > bestPriority) {
             bestPriority = b.layoutPriority;

@@ -3,6 +3,7 @@
 // tests/unit/rhi/resource_state_vk_test.cpp.
 #include <vulkan/vulkan.h>
 
+#include "caustics/rhi/pipeline_stages.h"
 #include "caustics/rhi/resource_state.h"
 
 namespace caustics::rhi::vulkan {
@@ -16,6 +17,13 @@ struct VkStateInfo {
 // Combined states (several bits) OR their stages and access; the layout is the one of the most
 // specific bit (e.g. DepthRead|ShaderResource -> DEPTH_STENCIL_READ_ONLY_OPTIMAL). `isDepth` selects
 // depth layouts for ShaderResource on depth textures.
-VkStateInfo translateState(ResourceState state, bool isDepth = false);
+// `work` narrows the stages to those that kind of work runs (ShaderResource read by Compute:
+// COMPUTE_SHADER only); a state none of whose stages that work runs keeps all of its own (a
+// conservative answer for a combination the graph should not produce). None = no narrowing.
+VkStateInfo translateState(ResourceState state, bool isDepth = false, PipelineStages work = PipelineStages::None);
+
+// Every Vulkan stage the given kinds of work run (ALL_COMMANDS for None): the source scope of an
+// aliasing barrier, which waits for whatever work last used the memory.
+VkPipelineStageFlags2 stagesOfWork(PipelineStages work);
 
 }  // namespace caustics::rhi::vulkan

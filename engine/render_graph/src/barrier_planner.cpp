@@ -3,6 +3,8 @@
 // transition), and also when the state stays the same but either side writes: read-after-write and
 // write-after-write in UAV state (D3D12 "UAV barrier"; Vulkan execution + memory dependency) and
 // render target -> render target across passes. Read -> read in the same state needs none.
+// Each barrier also carries the work on either side (docs/embedding.md "Barriers"): the kinds of the
+// passes that used the resource since its last barrier, and the kind of the pass that uses it next.
 #include <algorithm>
 
 #include "compiler_internal.h"
@@ -44,6 +46,9 @@ struct Track {
     bool lastWrite = false;
     bool live = false;
     bool touched = false;   // used by a kept pass
+    // The work of the passes that used it since its last barrier (None: every stage; the host's work
+    // before an import).
+    rhi::PipelineStages sinceBarrier = rhi::PipelineStages::None;
 };
 
 bool needsBarrier(const Track& t, ResourceState next, bool nextWrites) {
@@ -61,19 +66,55 @@ Status planBarriers(const GraphDesc& graph, CompiledPlan& plan) {
             tracks[r] = {res.initialState, rhi::isWriteState(res.initialState), true, false};
         }
     }
-    for (PlannedPass& planned : plan.order) {
-        auto uses = passUses(graph, planned.pass);
-        if (!uses) return uses.error();
-        for (const PassUse& use : *uses) {
+    // The memory of transients is shared across the frame (aliasing) and across frames (reuse), so a
+    // transient's first use waits for the work of every pass that uses one.
+    for (const PlannedPass& planned : plan.order) {
+        const PassDecl& pass = graph.passes[planned.pass];
+        bool usesTransient = false;
+        for (const AccessDecl& a : pass.accesses) usesTransient |= !graph.resources[a.resource].imported;
+        if (!usesTransient) continue;
+        plan.transientStages =
+            plan.transientsUsed ? unionStages(plan.transientStages, passStages(pass)) : passStages(pass);
+        plan.transientsUsed = true;
+    }
+    std::vector<std::vector<PassUse>> uses;
+    std::vector<rhi::PipelineStages> work;
+    for (const PlannedPass& planned : plan.order) {
+        auto passUsesOf = passUses(graph, planned.pass);
+        if (!passUsesOf) return passUsesOf.error();
+        uses.push_back(std::move(*passUsesOf));
+        work.push_back(passStages(graph.passes[planned.pass]));
+    }
+    // A barrier into a read state serves every later reader in that state up to the next change (they
+    // get no barrier of their own), so its destination is the work of all of them.
+    auto readersFrom = [&](size_t position, const PassUse& use) {
+        rhi::PipelineStages readers = work[position];
+        for (size_t later = position + 1; later < uses.size() && !use.writes; ++later) {
+            auto it = std::find_if(uses[later].begin(), uses[later].end(),
+                                   [&](const PassUse& u) { return u.resource == use.resource; });
+            if (it == uses[later].end()) continue;
+            if (it->writes || it->state != use.state) break;
+            readers = unionStages(readers, work[later]);
+        }
+        return readers;
+    };
+    for (size_t position = 0; position < plan.order.size(); ++position) {
+        PlannedPass& planned = plan.order[position];
+        for (const PassUse& use : uses[position]) {
             Track& t = tracks[use.resource];
             ResourceKind kind = graph.resources[use.resource].kind;
+            rhi::PipelineStages since = unionStages(t.sinceBarrier, work[position]);
             if (!t.live) {
                 bool aliasing = use.resource < plan.sharesMemory.size() && plan.sharesMemory[use.resource];
-                planned.barriers.push_back({use.resource, kind, ResourceState::Undefined, use.state, true, aliasing});
+                planned.barriers.push_back({use.resource, kind, ResourceState::Undefined, use.state, true, aliasing,
+                                            plan.transientStages, readersFrom(position, use)});
+                since = work[position];
             } else if (needsBarrier(t, use.state, use.writes)) {
-                planned.barriers.push_back({use.resource, kind, t.state, use.state, false});
+                planned.barriers.push_back({use.resource, kind, t.state, use.state, false, false, t.sinceBarrier,
+                                            readersFrom(position, use)});
+                since = work[position];
             }
-            t = {use.state, use.writes, true, true};
+            t = {use.state, use.writes, true, true, since};
         }
     }
     for (size_t r = 0; r < graph.resources.size(); ++r) {
@@ -85,7 +126,8 @@ Status planBarriers(const GraphDesc& graph, CompiledPlan& plan) {
         // The host's later commands on the same queue must see the graph's last write, so a final
         // barrier is recorded even where the state already matches.
         if (t.state != res.finalState || (t.touched && t.lastWrite))
-            plan.finalBarriers.push_back({uint32_t(r), res.kind, t.state, res.finalState, false});
+            plan.finalBarriers.push_back({uint32_t(r), res.kind, t.state, res.finalState, false, false, t.sinceBarrier,
+                                          rhi::PipelineStages::None});
     }
     return okStatus();
 }

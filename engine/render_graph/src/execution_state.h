@@ -28,6 +28,12 @@ struct RenderGraph::ExecutionState {
         bool pending = false;
     };
 
+    // The work of every pass that used a transient in an executed frame (None: some pass of unknown
+    // kind, i.e. every stage): a transient's first use waits for it, since an earlier frame still in
+    // flight may be using the same memory.
+    rhi::PipelineStages transientWork = rhi::PipelineStages::None;
+    bool transientWorkSeen = false;
+
     rhi::HeapHandle heap;
     uint64_t heapSize = 0;
     std::vector<CachedTransient> cache;

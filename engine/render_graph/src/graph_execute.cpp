@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "compiler_internal.h"
 #include "execution_state.h"
 #include "caustics/rhi/log.h"
 #include "caustics/rhi/log_capture.h"
@@ -96,7 +97,10 @@ Status RenderGraph::realizeTransients(rhi::IDevice& device) {
 }
 
 namespace {
-void recordBarriers(rhi::ICommandList& cmd, const std::vector<PlannedBarrier>& planned, const PhysicalResources& phys) {
+// `earlierFrames`: the work that used transient memory in frames executed before (an activation's
+// source scope includes it; see ExecutionState::transientWork).
+void recordBarriers(rhi::ICommandList& cmd, const std::vector<PlannedBarrier>& planned, const PhysicalResources& phys,
+                    std::optional<rhi::PipelineStages> earlierFrames) {
     if (planned.empty()) return;
     std::vector<rhi::TextureBarrier> textures;
     std::vector<rhi::BufferBarrier> buffers;
@@ -106,14 +110,18 @@ void recordBarriers(rhi::ICommandList& cmd, const std::vector<PlannedBarrier>& p
         // aliases inside this frame: transients and the heap are reused across frames, and an earlier
         // frame still in flight may be reading the same memory (write-after-read across frames).
         const bool waitForEarlierUse = b.aliasing || b.activation;
+        const rhi::PipelineStages src =
+            b.activation && earlierFrames ? detail::unionStages(b.srcStages, *earlierFrames) : b.srcStages;
         switch (b.kind) {
             case ResourceKind::Texture:
-                textures.push_back({phys.textures[b.resource], b.before, b.after, {}, waitForEarlierUse});
+                textures.push_back({phys.textures[b.resource], b.before, b.after, {}, waitForEarlierUse, src, b.dstStages});
                 break;
             case ResourceKind::Buffer:
-                buffers.push_back({phys.buffers[b.resource], b.before, b.after, waitForEarlierUse});
+                buffers.push_back({phys.buffers[b.resource], b.before, b.after, waitForEarlierUse, src, b.dstStages});
                 break;
-            case ResourceKind::AccelStruct: accels.push_back({phys.accelStructs[b.resource], b.before, b.after}); break;
+            case ResourceKind::AccelStruct:
+                accels.push_back({phys.accelStructs[b.resource], b.before, b.after, src, b.dstStages});
+                break;
         }
     }
     cmd.barriers(textures, buffers, accels);
@@ -164,13 +172,15 @@ Status RenderGraph::execute(rhi::IDevice& device, rhi::ICommandList& cmd) {
     uint32_t base = slot * 2 * ex.passesPerSlot;
     if (timed && passCount) cmd.resetTimestamps(ex.timestampPool, base, 2 * passCount);
 
+    std::optional<rhi::PipelineStages> earlierFrames;
+    if (ex.transientWorkSeen) earlierFrames = ex.transientWork;
     std::string firstError;
     std::vector<std::string> names;
     for (uint32_t i = 0; i < passCount; ++i) {
         const PlannedPass& planned = plan.order[i];
         const std::string& name = desc_.passes[planned.pass].name;
         names.push_back(name);
-        recordBarriers(cmd, planned.barriers, ex.physical);
+        recordBarriers(cmd, planned.barriers, ex.physical, earlierFrames);
         cmd.beginMarker(name);
         if (timed) cmd.writeTimestamp(ex.timestampPool, base + 2 * i);
         if (executes_[planned.pass]) {
@@ -185,7 +195,11 @@ Status RenderGraph::execute(rhi::IDevice& device, rhi::ICommandList& cmd) {
         if (timed) cmd.writeTimestamp(ex.timestampPool, base + 2 * i + 1);
         cmd.endMarker();
     }
-    recordBarriers(cmd, plan.finalBarriers, ex.physical);
+    recordBarriers(cmd, plan.finalBarriers, ex.physical, earlierFrames);
+    if (plan.transientsUsed) {
+        ex.transientWork = earlierFrames ? detail::unionStages(*earlierFrames, plan.transientStages) : plan.transientStages;
+        ex.transientWorkSeen = true;
+    }
     if (timed) ex.slots[slot] = {std::move(names), passCount > 0};
     ++ex.frame;
     if (!firstError.empty()) return makeError(firstError);

@@ -28,6 +28,8 @@ std::string barrierText(const GraphDesc& g, const PlannedBarrier& b) {
     std::string s = std::string(resourceKindName(b.kind)) + " '" + g.resources[b.resource].name + "' " +
                     rhi::resourceStateName(b.before) + " -> " + rhi::resourceStateName(b.after);
     if (b.activation) s += b.aliasing ? " (activate, aliased memory)" : " (activate)";
+    // The work on either side (None: every stage).
+    s += std::string(" [") + rhi::pipelineStagesName(b.srcStages) + " -> " + rhi::pipelineStagesName(b.dstStages) + "]";
     return s;
 }
 

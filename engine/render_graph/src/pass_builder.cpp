@@ -48,6 +48,8 @@ uint32_t PassBuilder::access(ResourceKind kind, uint32_t index, uint32_t version
     return res.latestVersion;
 }
 
+void PassBuilder::setStages(rhi::PipelineStages stages) { graph_.desc_.passes[pass_].stages = stages; }
+
 RgTexture PassBuilder::read(RgTexture t, Access a) { return {t.index, access(ResourceKind::Texture, t.index, t.version, a, false)}; }
 RgBuffer PassBuilder::read(RgBuffer b, Access a) { return {b.index, access(ResourceKind::Buffer, b.index, b.version, a, false)}; }
 RgAccelStruct PassBuilder::read(RgAccelStruct s, Access a) {

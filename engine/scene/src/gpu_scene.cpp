@@ -103,6 +103,9 @@ Result<GpuScene> GpuScene::create(rhi::IDevice& device, const Scene& sceneIn, co
     const Scene& scene = *scenePtr;
     for (const Instance& inst : scene.instances)
         if (inst.mesh >= scene.meshes.size()) return makeError("GpuScene: an instance refers to a missing mesh");
+    if (!desc.uploadGeometry && desc.buildAccelStructs)
+        return makeError("GpuScene: buildAccelStructs needs the geometry; uploadGeometry = false is for a host that "
+                         "hands in its own TLAS and geometry tables (set buildAccelStructs = false too)");
     PackedScene packed = packScene(scene);
 
     GpuScene out;
@@ -112,9 +115,11 @@ Result<GpuScene> GpuScene::create(rhi::IDevice& device, const Scene& sceneIn, co
     CAUSTICS_TRY(rhi::CommandListHandle cmd, device.createCommandList());
     cmd->begin();
     using U = rhi::BufferUsage;
-    CAUSTICS_TRY(out.positions, uploadBuffer(device, *cmd, packed.positions, U::Storage | U::Vertex | U::AccelStructInput, 4, "scene positions"));
-    CAUSTICS_TRY(out.vertices, uploadBuffer(device, *cmd, packed.vertices, U::Storage | U::Vertex, sizeof(GpuVertex), "scene vertices"));
-    CAUSTICS_TRY(out.indices, uploadBuffer(device, *cmd, packed.indices, U::Storage | U::Index | U::AccelStructInput, 4, "scene indices"));
+    if (desc.uploadGeometry) {
+        CAUSTICS_TRY(out.positions, uploadBuffer(device, *cmd, packed.positions, U::Storage | U::Vertex | U::AccelStructInput, 4, "scene positions"));
+        CAUSTICS_TRY(out.vertices, uploadBuffer(device, *cmd, packed.vertices, U::Storage | U::Vertex, sizeof(GpuVertex), "scene vertices"));
+        CAUSTICS_TRY(out.indices, uploadBuffer(device, *cmd, packed.indices, U::Storage | U::Index | U::AccelStructInput, 4, "scene indices"));
+    }
     CAUSTICS_TRY(out.materials, uploadBuffer(device, *cmd, packed.materials, U::Storage, sizeof(GpuMaterial), "scene materials"));
     std::vector<GpuInstance> instanceTable = packed.instances;
     CAUSTICS_TRY(out.instances, uploadBuffer(device, *cmd, instanceTable, U::Storage, sizeof(GpuInstance), "scene instances"));
@@ -149,6 +154,7 @@ Result<GpuScene> GpuScene::create(rhi::IDevice& device, const Scene& sceneIn, co
         {out.materials, rhi::ResourceState::CopyDest, rhi::ResourceState::ShaderResource},
         {out.instances, rhi::ResourceState::CopyDest, rhi::ResourceState::ShaderResource},
     };
+    std::erase_if(buffers, [](const rhi::BufferBarrier& b) { return !b.buffer; });   // geometry not uploaded
     cmd->barriers(toShader, buffers);
 
     if (desc.buildAccelStructs && !scene.instances.empty()) {

@@ -34,6 +34,13 @@ struct HostSceneTables {
     // The state the host leaves its TLAS in before the graph and wants it in after (built and readable).
     rhi::ResourceState tlasState = rhi::ResourceState::AccelStructRead;
     rhi::BufferHandle positions, vertices, indices, materials, instances;
+    // The state the host leaves the five tables in before the graph and wants them in after. The module
+    // imports them with it and its own barrier makes the host's earlier writes visible to every shader
+    // stage (docs/embedding.md "Hand-over states"): CopyDest after a copy or vkCmdUpdateBuffer in the
+    // same command buffer, UnorderedAccess after a compute pass wrote them, AccelStructBuildInput after
+    // the host's BLAS/TLAS builds read them; ShaderResource (the default) when they are already visible
+    // to shader reads (written from the CPU before the submit, or behind the host's own barrier).
+    rhi::ResourceState tablesState = rhi::ResourceState::ShaderResource;
     // Required with `tlas` or `instances`: what the host wrote into its instance table (and placed in its
     // TLAS) for this frame, one GpuInstance per scene instance. Read during addPasses only.
     std::span<const scene::GpuInstance> instanceRows;
@@ -47,7 +54,7 @@ inline constexpr float kHostInstanceTransformTolerance = 1e-4f;
 // level, a buffer without Storage usage, geometry tables not given as a set (positions, vertices and
 // indices: the instance rows index all three), or an instance or material table with fewer rows than
 // the scene has instances or materials (the hit shaders would read past its end), and, with a host
-// TLAS or instance table, missing `instanceRows` or a row whose transform, material or specular flag is
+// TLAS or instance table, missing `instanceRows`, a `tablesState` a buffer cannot be in, or a row whose transform, material or specular flag is
 // not the scene instance's (naming the instance, its row and the entry). Device-free; the module calls
 // it at every addPasses.
 Status checkHostSceneTables(const HostSceneTables& tables, const scene::Scene& scene);

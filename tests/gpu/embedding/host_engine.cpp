@@ -53,8 +53,9 @@ Result<EmbeddedCaustics> embedCaustics(const RawVulkanHost& host, const HostGBuf
         .usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, .width = kSize, .height = kSize,
         .uses = rhi::TextureUsage::CopyDest, .debugName = "host output"};
     CAUSTICS_TRY(e.output, rhi::importVulkanTexture(*e.device, target));
-    // With the host's TLAS the module needs no BLAS of its own (docs/embedding.md "Host scene tables").
-    CAUSTICS_TRY(scene::GpuScene gpuScene, scene::GpuScene::create(*e.device, scene, {.buildAccelStructs = !hostTlas}));
+    // With the host's TLAS and tables the module needs no BLAS and no geometry of its own (docs/embedding.md).
+    CAUSTICS_TRY(scene::GpuScene gpuScene,
+                 scene::GpuScene::create(*e.device, scene, {.buildAccelStructs = !hostTlas, .uploadGeometry = !hostTlas}));
     e.gpuScene = std::make_unique<scene::GpuScene>(std::move(gpuScene));
     CAUSTICS_TRY(e.module, CausticsModule::create(e.device, scene, *e.gpuScene, settings));
     return e;
@@ -142,6 +143,10 @@ Result<HostEngineFrame> renderFrame(RawVulkanHost& host, HostResources& r, const
     host.begin();
     r.gbuffer.record(camera);
     if (options.ownSceneTables) r.rayTracing.recordBuilds();
+    if (options.materialsWrittenInCommandBuffer) {
+        r.rayTracing.recordMaterialUpload();
+        hostScene.tablesState = rhi::ResourceState::CopyDest;
+    }
     host.imageBarrier(r.output.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                       VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
     auto signal = recordCaustics(embedded, graph, list, host.commandBuffer, camera, hostScene);
@@ -198,7 +203,7 @@ Result<HostEngineFrame> hostEngineFrame(const scene::Scene& scene, const CameraV
     }
     if (options.ownSceneTables)
         created = created && r.rayTracing.create(host, scene, std::min(options.instanceRows, scene.instances.size()),
-                                                      options.diffuseAlbedoScale);
+                                                      options.diffuseAlbedoScale, options.materialsWrittenInCommandBuffer);
     r.output = host.createImage(kSize, kSize, VK_FORMAT_R32G32B32A32_SFLOAT,
                                 VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     r.readback = host.createHostBuffer(pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT);

@@ -38,6 +38,10 @@ struct HostEngineOptions {
     // Scales the base colour of the diffuse materials in the host's material table only (ownSceneTables):
     // the caustic's receiver BRDF comes from that table, so its radiance scales with it.
     float diffuseAlbedoScale = 1.0f;
+    // The host writes its material table in its command buffer (vkCmdUpdateBuffer, no barrier of its
+    // own) and hands the tables over in CopyDest (HostSceneTables::tablesState): the module's barrier
+    // must make the write visible (ownSceneTables).
+    bool materialsWrittenInCommandBuffer = false;
     // The host's G-buffer writes its own object ids, kSparseIdBase + kSparseIdStride * instance row,
     // instead of the module's row + 1; with objectIdMap it hands the module the (hostId, moduleId) map.
     bool sparseObjectIds = false;

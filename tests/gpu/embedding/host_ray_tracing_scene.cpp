@@ -25,7 +25,7 @@ VkDeviceAddress HostRayTracingScene::address(const RawBuffer& buffer) const {
 }
 
 bool HostRayTracingScene::create(RawVulkanHost& host, const scene::Scene& scene, size_t instanceRows,
-                                 float diffuseAlbedoScale) {
+                                 float diffuseAlbedoScale, bool materialsOnTheGpu) {
     host_ = &host;
     auto load = [&](auto& fn, const char* name) {
         fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(vkGetDeviceProcAddr(host.device, name));
@@ -44,7 +44,9 @@ bool HostRayTracingScene::create(RawVulkanHost& host, const scene::Scene& scene,
     positions = uploadTable(host, packed.positions, packed.positions.size(), positionBytes);
     vertices = uploadTable(host, packed.vertices, packed.vertices.size(), vertexBytes);
     indices = uploadTable(host, packed.indices, packed.indices.size(), indexBytes);
-    materials = uploadTable(host, packed.materials, packed.materials.size(), materialBytes);
+    materialRows = packed.materials;
+    const std::vector<scene::GpuMaterial> zeros(packed.materials.size(), scene::GpuMaterial{});
+    materials = uploadTable(host, materialsOnTheGpu ? zeros : packed.materials, packed.materials.size(), materialBytes);
     instances = uploadTable(host, packed.instances, std::min(instanceRows, packed.instances.size()), instanceBytes);
     this->instanceRows.assign(packed.instances.begin(), packed.instances.begin() + std::min(instanceRows, packed.instances.size()));
     if (!positions.mapped || !vertices.mapped || !indices.mapped || !materials.mapped || !instances.mapped) return false;
@@ -131,6 +133,12 @@ void HostRayTracingScene::recordBuilds() {
     cmdBuild_(host_->commandBuffer, 1, &tlas_.build, &range);
     host_->memoryBarrier(kBuild, VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
                          VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR);
+}
+
+void HostRayTracingScene::recordMaterialUpload() {
+    // vkCmdUpdateBuffer: at most 65536 bytes, a multiple of 4 (the rows are 96 bytes each).
+    vkCmdUpdateBuffer(host_->commandBuffer, materials.buffer, 0, materialRows.size() * sizeof(scene::GpuMaterial),
+                      materialRows.data());
 }
 
 void HostRayTracingScene::destroy() {

@@ -15,15 +15,23 @@ namespace caustics::test {
 
 class HostRayTracingScene {
 public:
-    // The tables' usage: bound as storage buffers by the module, read by the host's AS builds.
+    // The tables' usage: bound as storage buffers by the module, read by the host's AS builds, written
+    // by vkCmdUpdateBuffer (recordMaterialUpload).
     static constexpr VkBufferUsageFlags kTableUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                                       VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
                                                       VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR;
 
     // Writes the tables (host-visible) and creates the acceleration structures; `instanceRows` < the
     // scene's instance count leaves the instance table short (the refusal test); `diffuseAlbedoScale`
     // scales the base colour of the non-specular materials in the host's material table. False on failure.
-    bool create(RawVulkanHost& host, const scene::Scene& scene, size_t instanceRows, float diffuseAlbedoScale = 1.0f);
+    // `materialsOnTheGpu`: the CPU writes zeros into the material table; recordMaterialUpload() writes the
+    // rows in the host's command buffer instead.
+    bool create(RawVulkanHost& host, const scene::Scene& scene, size_t instanceRows, float diffuseAlbedoScale = 1.0f,
+                bool materialsOnTheGpu = false);
+    // Records vkCmdUpdateBuffer of the material rows into host.commandBuffer, with no barrier after it:
+    // the host hands the tables over in CopyDest and the module's barrier makes the write visible.
+    void recordMaterialUpload();
     // Records the BLAS builds, then the TLAS build, into host.commandBuffer; the TLAS is left readable
     // by ray-tracing shaders (a barrier AS write -> AS read at the ray-tracing stage).
     void recordBuilds();
@@ -35,6 +43,7 @@ public:
     // The host's CPU copy of what it wrote into `instances` (and placed in its TLAS): handed to the module
     // as HostSceneTables::instanceRows, which checks the CPU scene against it every frame.
     std::vector<scene::GpuInstance> instanceRows;
+    std::vector<scene::GpuMaterial> materialRows;   // what the material table holds once written
 
 private:
     struct AccelStruct {

@@ -96,5 +96,21 @@ TEST(HostSceneCheck, HostTablesWithoutTheirCpuRowsAreRefused) {
     EXPECT_NE(st.message().find("instanceRows holds 0 rows; the scene has 2"), std::string::npos) << st.message();
 }
 
+// docs/embedding.md "Hand-over states": the tables are imported in the state the host declares; one a
+// buffer cannot be in (a render target, an acceleration structure) is refused by name.
+TEST(HostSceneCheck, TablesStateABufferCannotBeHandedOverInIsRefusedNamingIt) {
+    scene::Scene s = twoInstances();
+    HostTables h = hostTablesOf(s);
+    for (rhi::ResourceState ok : {rhi::ResourceState::ShaderResource, rhi::ResourceState::CopyDest,
+                                  rhi::ResourceState::UnorderedAccess, rhi::ResourceState::AccelStructBuildInput}) {
+        h.tables.tablesState = ok;
+        EXPECT_TRUE(checkHostSceneTables(h.tables, s).ok()) << rhi::resourceStateName(ok);
+    }
+    h.tables.tablesState = rhi::ResourceState::RenderTarget;
+    Status st = checkHostSceneTables(h.tables, s);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.message().find("HostSceneTables::tablesState RenderTarget"), std::string::npos) << st.message();
+}
+
 }  // namespace
 }  // namespace caustics

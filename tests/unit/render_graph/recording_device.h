@@ -33,6 +33,9 @@ private:
 class RecordingCommandList final : public rhi::ICommandList {
 public:
     std::vector<std::string> calls;
+    // Every barrier as recorded, with its stages (calls keeps the states only).
+    std::vector<rhi::TextureBarrier> textureBarriers;
+    std::vector<rhi::BufferBarrier> bufferBarriers;
     bool timestamps = true;   // false: a host's list wrapped with allowTimestamps = false
     bool recordsTimestamps() const override { return timestamps; }
 
@@ -40,6 +43,8 @@ public:
     void end() override {}
     void barriers(std::span<const rhi::TextureBarrier> t, std::span<const rhi::BufferBarrier> b,
                   std::span<const rhi::AccelStructBarrier> a) override {
+        textureBarriers.insert(textureBarriers.end(), t.begin(), t.end());
+        bufferBarriers.insert(bufferBarriers.end(), b.begin(), b.end());
         for (const auto& x : t)
             calls.push_back("barrier " + x.texture->desc().debugName + " " + rhi::resourceStateName(x.before) + "->" +
                             rhi::resourceStateName(x.after));

@@ -73,5 +73,46 @@ TEST(VulkanStateTranslation, ShaderTableIsReadByRayTracingStage) {
     EXPECT_EQ(s.access, VK_ACCESS_2_SHADER_BINDING_TABLE_READ_BIT_KHR);
 }
 
+// The render graph's compute -> ray tracing, raster -> compute and copy -> compute chains
+// (RenderGraphBarrierStages.*) become these masks: only the producer's and the consumer's stages.
+TEST(VulkanStateTranslation, WorkNarrowsShaderStatesToTheStagesThatWorkRuns) {
+    EXPECT_EQ(translateState(ResourceState::UnorderedAccess, false, PipelineStages::Compute).stages,
+              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    EXPECT_EQ(translateState(ResourceState::ShaderResource, false, PipelineStages::RayTracing).stages,
+              VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR);
+    EXPECT_EQ(translateState(ResourceState::ShaderResource, false, PipelineStages::Raster).stages,
+              VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    EXPECT_EQ(translateState(ResourceState::RenderTarget, false, PipelineStages::Raster).stages,
+              VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT);
+    EXPECT_EQ(translateState(ResourceState::CopyDest, false, PipelineStages::Copy).stages,
+              VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
+    EXPECT_EQ(translateState(ResourceState::AccelStructRead, false, PipelineStages::RayTracing).stages,
+              VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR);
+    EXPECT_EQ(translateState(ResourceState::IndirectArgument, false, PipelineStages::RayTracing).stages,
+              VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT);
+    // The access and layout do not change with the work.
+    EXPECT_EQ(translateState(ResourceState::UnorderedAccess, false, PipelineStages::Compute).access,
+              VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_SHADER_WRITE_BIT);
+    EXPECT_EQ(translateState(ResourceState::ShaderResource, false, PipelineStages::Compute).layout,
+              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+TEST(VulkanStateTranslation, WorkThatCannotUseTheStateLeavesItsStagesWhole) {
+    // A colour attachment "used by compute" is a graph inconsistency: no stage is dropped.
+    EXPECT_EQ(translateState(ResourceState::RenderTarget, false, PipelineStages::Compute).stages,
+              translateState(ResourceState::RenderTarget).stages);
+    EXPECT_EQ(translateState(ResourceState::UnorderedAccess, false, PipelineStages::None).stages,
+              translateState(ResourceState::UnorderedAccess).stages);
+}
+
+TEST(VulkanStateTranslation, AliasingSourceIsEveryStageOfTheEarlierWorkOrAllCommands) {
+    EXPECT_EQ(stagesOfWork(PipelineStages::None), VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT);
+    EXPECT_EQ(stagesOfWork(PipelineStages::Copy), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
+    EXPECT_EQ(stagesOfWork(PipelineStages::Compute | PipelineStages::RayTracing),
+              VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+                  VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR);
+    EXPECT_FALSE(stagesOfWork(PipelineStages::Raster | PipelineStages::Compute) & VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
+}
+
 }  // namespace
 }  // namespace caustics::rhi::vulkan

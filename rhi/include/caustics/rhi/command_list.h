@@ -9,6 +9,7 @@
 
 #include "caustics/rhi/accel_struct.h"
 #include "caustics/rhi/pipeline.h"
+#include "caustics/rhi/pipeline_stages.h"
 #include "caustics/rhi/state_object.h"
 
 namespace caustics::rhi {
@@ -28,18 +29,27 @@ struct TextureBarrier {
     // (D3D12 aliasing barrier; Vulkan: src stage ALL_COMMANDS, src access MEMORY_WRITE). Added by the
     // render graph; a plain Undefined source waits for nothing.
     bool aliasing = false;
+    // The work that last used the texture (or, with `aliasing`, its memory) and the work that uses it
+    // next. None = every stage the state allows (Vulkan: all shader stages; an aliasing barrier then
+    // waits for ALL_COMMANDS). The render graph sets both from its passes' kinds.
+    PipelineStages beforeStages = PipelineStages::None;
+    PipelineStages afterStages = PipelineStages::None;
 };
 struct BufferBarrier {
     BufferHandle buffer;
     ResourceState before = ResourceState::Undefined;
     ResourceState after = ResourceState::Common;
     bool aliasing = false;   // as TextureBarrier::aliasing
+    PipelineStages beforeStages = PipelineStages::None;   // as TextureBarrier's
+    PipelineStages afterStages = PipelineStages::None;
 };
 // Orders AS builds against later builds and traces (D3D12: UAV barrier on the AS).
 struct AccelStructBarrier {
     AccelStructHandle accelStruct;
     ResourceState before = ResourceState::AccelStructWrite;
     ResourceState after = ResourceState::AccelStructRead;
+    PipelineStages beforeStages = PipelineStages::None;   // as TextureBarrier's
+    PipelineStages afterStages = PipelineStages::None;
 };
 
 // One mip level of one array layer, and a rectangle in it. width/height 0 = to the edge of the mip.

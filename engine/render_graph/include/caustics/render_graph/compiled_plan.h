@@ -22,6 +22,13 @@ struct PlannedBarrier {
     // Activation of a transient whose heap range other transients also use (at other times): the
     // barrier must also wait for earlier work on that memory (rhi::TextureBarrier::aliasing).
     bool aliasing = false;
+    // The work that used the resource since its last barrier and the work that uses it next (rhi
+    // barrier's beforeStages/afterStages). None = every stage: the host's work before an import or after
+    // the graph, or a pass whose kind is unknown. An activation's source is the work of every kept pass
+    // that uses a transient (the memory's earlier users, in this frame or an earlier one still in flight);
+    // execute() adds the work of earlier frames.
+    rhi::PipelineStages srcStages = rhi::PipelineStages::None;
+    rhi::PipelineStages dstStages = rhi::PipelineStages::None;
 };
 
 struct PlannedPass {
@@ -57,6 +64,9 @@ struct CompiledPlan {
     std::vector<bool> sharesMemory;   // per resource: its heap range overlaps another transient's
     uint64_t heapSize = 0;
     std::vector<Dependency> dependencies;
+    // The work of every kept pass that uses a transient (None if one of them is of unknown kind).
+    rhi::PipelineStages transientStages = rhi::PipelineStages::None;
+    bool transientsUsed = false;
 
     const PlannedPass* findPass(uint32_t declIndex) const {
         for (const PlannedPass& p : order)

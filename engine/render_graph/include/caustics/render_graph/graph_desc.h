@@ -8,6 +8,7 @@
 
 #include "caustics/render_graph/access.h"
 #include "caustics/render_graph/resource_handle.h"
+#include "caustics/rhi/pipeline_stages.h"
 #include "caustics/rhi/resource_state.h"
 #include "caustics/rhi/resources.h"
 
@@ -40,6 +41,9 @@ struct AccessDecl {
 struct PassDecl {
     std::string name;
     bool sideEffects = false;   // never culled (e.g. writes a host-visible buffer or presents)
+    // The kind of work the pass records (PassBuilder::setStages); None = inferred from its accesses
+    // where they leave no doubt, else every stage (passStages()).
+    rhi::PipelineStages stages = rhi::PipelineStages::None;
     std::vector<AccessDecl> accesses;
 };
 

@@ -5,6 +5,7 @@
 
 #include "caustics/render_graph/access.h"
 #include "caustics/render_graph/resource_handle.h"
+#include "caustics/rhi/pipeline_stages.h"
 #include "caustics/rhi/resources.h"
 
 namespace caustics::rg {
@@ -28,6 +29,12 @@ public:
 
     // The pass does something the graph cannot see (host readback, present): never cull it.
     void setSideEffects() { sideEffects_ = true; }
+    // The kind of work the pass records (dispatch: Compute, dispatchRays: RayTracing, draws: Raster,
+    // copies and clears: Copy, AS builds: AccelStructBuild; several may be OR-ed). The graph's barriers
+    // then wait only for these stages and block only these (docs/embedding.md "Barriers"). Not said,
+    // the graph infers it from the accesses where they leave no doubt (attachments: Raster, copy
+    // accesses alone: Copy, AS build accesses alone: AccelStructBuild), else waits for every stage.
+    void setStages(rhi::PipelineStages stages);
 
 private:
     friend class RenderGraph;

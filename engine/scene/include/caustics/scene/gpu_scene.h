@@ -28,6 +28,10 @@ struct GpuSceneDesc {
     // already Morton-sort them. Set this to sort copies here (for scenes built elsewhere).
     bool sortTriangles = false;
     bool buildAccelStructs = true;
+    // False: positions, vertices and indices are not uploaded (the three handles stay null). For a host
+    // that hands the module its own TLAS and geometry tables (FrameInputs::hostScene; docs/embedding.md
+    // "Host scene tables"): every pass then reads the host's. Needs buildAccelStructs = false.
+    bool uploadGeometry = true;
 };
 
 class GpuScene {
