@@ -16,6 +16,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
     prepareSphereBudget(f);
     addSpecularPixelPass(graph, f);
     graph.addPass("caustics.backward", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::RayTracing);
         const CausticsSettings& s = f.in->settings;
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         if (f.in->sceneTlas.valid()) b.read(f.in->sceneTlas);
@@ -97,6 +98,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         gatherGrid = addGridFromCountPass(graph, f, "caustics.gatherGrid", kStatStoredHitAttempts,
                                           f.hitCapacity, kStatSpheres);
     graph.addPass("caustics.gather", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::RayTracing);
         if (indirect) gatherGrid = b.read(gatherGrid, rg::Access::IndirectArgument);
         f.sphereTlas = b.read(f.sphereTlas, rg::Access::AccelStructTrace);
         f.spheres = b.read(f.spheres, rg::Access::SampledRead);

@@ -13,6 +13,7 @@ void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
     f.sphereAabbs = graph.importBuffer("caustics.sphereAabbs", f.res->sphereAabbs, rhi::ResourceState::Common,
                                        rhi::ResourceState::Common);
     graph.addPass("caustics.specularPixels", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute | rhi::PipelineStages::Copy);
         rg::RgTexture objectId = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
         rg::RgTexture optics = b.read(f.in->gbuffer.optics, rg::Access::SampledRead);
         // As many entries as sphere slots: a pixel past the capacity gets no sphere, listed or not.

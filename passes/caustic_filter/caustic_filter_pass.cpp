@@ -35,6 +35,7 @@ using namespace filter;
 void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
     const uint32_t w = f.width, h = f.height;
     graph.addPass("caustics.resolve", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         // One buffer for both types (CausticFrameInputs::separateTypes off): it is bound twice and the
         // radiance texture in all three image slots; the shader writes only the sum.
         const bool separate = f.separateTypes;
@@ -84,6 +85,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     const bool last = i + 1 == s.atrousIterations;
     const std::string name = "caustics.atrous." + std::to_string(i);
     graph.addPass(name, [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide);
         readTiles(b, ff.tiles, true);
         if (last) radiance = output = b.write(output);
@@ -114,6 +116,7 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
     const GBuffer& g = f.in->gbuffer;
     const uint32_t next = readCopy ^ 1u, frameIndex = f.in->frameIndex;
     graph.addPass("caustics.temporal", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.normalRoughness), b.read(g.objectId),
                                     b.read(hist.previousColor), b.read(hist.previousGuides), b.read(hist.previousSlots)};
@@ -203,6 +206,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
 
     if (s.atrousIterations == 0) {
         graph.addPass("caustics.filterOutput", [&](rg::PassBuilder& b) {
+            b.setStages(rhi::PipelineStages::Compute);
             const rg::RgTexture in[] = {b.read(color), b.read(guides)};
             readTiles(b, ff.tiles, false);
             out.radiance = b.write(raw, rg::Access::StorageReadWrite);
@@ -224,6 +228,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     }
     rg::RgTexture radiance;
     graph.addPass("caustics.variance", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in[] = {b.read(raw), b.read(color), b.read(guides), b.read(g.objectId)};
         readTiles(b, ff.tiles, true);
         radiance = b.write(b.createTexture("caustics.variance", poolImageDesc(ff.poolTiles, rhi::Format::RGBA16_FLOAT,

@@ -41,6 +41,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
     const uint32_t capacity = f.history->poolTiles;
     FilterTiles t;
     graph.addPass("caustics.filterTiles", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const GBuffer& g = f.in->gbuffer;
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.objectId), b.read(hist.previousTiles)};
@@ -77,6 +78,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
         };
     });
     graph.addPass("caustics.filterTiles.list", [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
         hist.tiles = b.write(hist.tiles, rg::Access::StorageReadWrite);
         hist.slots = b.write(hist.slots);
         t.args = b.write(t.args, rg::Access::StorageReadWrite);
