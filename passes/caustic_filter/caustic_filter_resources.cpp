@@ -1,6 +1,10 @@
 // The filter's pipelines (caustic_filter.h).
 #include "caustic_filter/caustic_filter.h"
 
+#include "caustic_filter/combine_types_bindings.h"
+#include "caustic_filter/shaders/combine_types.h"
+#include "module/pass_bindings.h"
+
 namespace caustics {
 
 Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
@@ -27,11 +31,14 @@ Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
     CAUSTICS_TRY(p.tiles, makeComputePipeline(d, "caustic_filter/tiles.comp", p.tilesLayout, 8));
     CAUSTICS_TRY(p.tileList, makeComputePipeline(d, "caustic_filter/tile_list.comp", p.tileListLayout, 12));
     CAUSTICS_TRY(p.output, makeComputePipeline(d, "caustic_filter/output.comp", p.outputLayout, 12));
-    CAUSTICS_TRY(p.temporal, makeComputePipeline(d, "caustic_filter/temporal.comp", p.temporalLayout, 16));
+    CAUSTICS_TRY(p.temporal, makeComputePipeline(d, "caustic_filter/temporal.comp", p.temporalLayout, 20));
     CAUSTICS_TRY(p.variance, makeComputePipeline(d, "caustic_filter/variance.comp", p.varianceLayout, 12));
     CAUSTICS_TRY(p.atrousWeights, makeComputePipeline(d, "caustic_filter/atrous_weights.comp", p.atrousWeightsLayout, 16));
     CAUSTICS_TRY(p.atrous, makeComputePipeline(d, "caustic_filter/atrous.comp", p.atrousLayout, 20));
     CAUSTICS_TRY(p.atrousLast, makeComputePipeline(d, "caustic_filter/atrous_last.comp", p.atrousLayout, 20));
+    CAUSTICS_TRY(p.combineLayout, createPassBindingLayout(d, shader_bindings::kCombineTypesBindings, 0, rhi::ShaderStage::All));
+    CAUSTICS_TRY(p.combine, makeComputePipeline(d, "caustic_filter/combine_types.comp", p.combineLayout,
+                                                sizeof(shader::CombineTypesParams)));
     return p;
 }
 

@@ -39,6 +39,8 @@ struct CausticResources::Impl {
     rhi::ComputePipelineHandle gridFromCount;     // caustic_grid_pass.cpp
     rhi::BindingLayoutHandle specularPixelLayout;
     rhi::ComputePipelineHandle specularPixelPipeline;   // backward_trace/specular_pixels_pass.cpp
+    rhi::BindingLayoutHandle secondTypeGuideLayout;
+    rhi::ComputePipelineHandle secondTypeGuidePipeline;   // backward_trace/second_type_guides_pass.cpp
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
     CausticFilterPipelines filter;   // resolve + filter (caustic_filter/)
@@ -91,6 +93,7 @@ struct CausticFrame {
     SphereCountReadback* sphereReadback = nullptr;   // this view's and slot's
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereTlas;
+    SecondTypeGuides secondTypeGuides;   // caustics.secondTypeGuides (invalid without the second type)
     CausticMapPlan plan;
     // The buffer the second type accumulates into: its own, or the first type's (one for both).
     rg::RgBuffer& secondTypeTarget() { return separateTypes ? radiance2 : radiance1; }
@@ -107,7 +110,8 @@ rg::RgBuffer addGridFromCountPass(rg::RenderGraph& graph, CausticFrame& f, const
                                   uint32_t cap, uint32_t gateSlot);
 void addForwardPass(rg::RenderGraph& graph, CausticFrame& f);
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
-void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);   // backward_trace/specular_pixels_pass.cpp
+void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);
+void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f);   // backward_trace/second_type_guides_pass.cpp   // backward_trace/specular_pixels_pass.cpp
 // backward_trace/sphere_budget.cpp: the slot's read-back of the sphere count and f.sphereCapacity;
 // the capacity from it (when the graph executes); the pass that copies this frame's count.
 void prepareSphereBudget(CausticFrame& f);

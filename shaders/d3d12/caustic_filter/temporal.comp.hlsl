@@ -19,7 +19,8 @@ ByteAddressBuffer tiles : register(t8, space0);
 RWTexture2D<float4> outColor : register(u9, space0);
 RWTexture2D<uint2> outGuides : register(u10, space0);
 RWTexture2D<uint> outGradient : register(u11, space0);
-struct Push { uint historyValid; float maxHistory; float preExposure; float historyScale; };
+// motionGuides: gLinearDepth is the second type's guide (mirror of temporal.comp).
+struct Push { uint historyValid; float maxHistory; float preExposure; float historyScale; uint motionGuides; };
 ConstantBuffer<Push> pc : register(b0, space999);
 
 static const float kHistoryRejectDeviations = 3.0f;
@@ -93,8 +94,11 @@ void main(uint3 group : SV_GroupID, uint3 groupThread : SV_GroupThreadID) {
     if (pc.historyValid != 0u && objectId != 0u && depth > 0.0f) {
         float3 world = cameraWorldPosition(camera, float2(p) + 0.5f, depth);
         float4 clip = mul(camera.prevViewProj, float4(world, 1.0f));
+        float4 guide = gLinearDepth.Load(int3(p, 0));
+        if (pc.motionGuides != 0u) clip.w = guide.w;
         if (clip.w > 0.0f) {
-            float2 prev = (clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f;   // texel-centre coordinates
+            // Texel-centre coordinates.
+            float2 prev = pc.motionGuides != 0u ? float2(p) + guide.yz : (clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f;
             int2 base = int2(floor(prev));
             float2 f = prev - float2(base);
             float tolerance = clip.w * filterRelativeDepthTolerance(camera.forward.w, float(size.y), n,

@@ -32,7 +32,9 @@ layout(set = 0, binding = 10, rg32ui) uniform writeonly uimage2D outGuides;   //
 layout(set = 0, binding = 11, r32ui) uniform writeonly uimage2D outGradient;  // half2 depth slope, pool
 // preExposure: this frame's (the host's exposure, docs/caustics.md "Filter", "Memory"); historyScale:
 // this frame's over last frame's, which the history was stored with.
-layout(push_constant) uniform Push { uint historyValid; float maxHistory; float preExposure; float historyScale; } pc;
+// motionGuides: gLinearDepth is the second type's guide (depth, motion x, motion y, last frame's depth;
+// docs/caustics.md "Second-type guides"): reproject with the receiver's own motion, not the camera ray's.
+layout(push_constant) uniform Push { uint historyValid; float maxHistory; float preExposure; float historyScale; uint motionGuides; } pc;
 
 const float kHistoryRejectDeviations = 3.0;
 const float kTrustedHistory = 4.0;   // SVGF's threshold for trusting the temporal moments
@@ -112,8 +114,11 @@ void main() {
     if (pc.historyValid != 0u && id != 0u && depth > 0.0) {
         vec3 world = cameraWorldPosition(camera, vec2(p) + 0.5, depth);
         vec4 clip = camera.prevViewProj * vec4(world, 1.0);
+        vec4 guide = texelFetch(gLinearDepth, p, 0);
+        if (pc.motionGuides != 0u) clip.w = guide.w;
         if (clip.w > 0.0) {
-            vec2 prev = (clip.xy / clip.w * 0.5 + 0.5) * vec2(size) - 0.5;   // texel-centre coordinates
+            // Texel-centre coordinates.
+            vec2 prev = pc.motionGuides != 0u ? vec2(p) + guide.yz : (clip.xy / clip.w * 0.5 + 0.5) * vec2(size) - 0.5;
             ivec2 base = ivec2(floor(prev));
             vec2 f = prev - vec2(base);
             float tolerance = clip.w * filterRelativeDepthTolerance(camera.forward.w, float(size.y), n,
