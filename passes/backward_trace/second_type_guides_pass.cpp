@@ -1,10 +1,13 @@
-// caustics.secondTypeGuides.clear and caustics.secondTypeGuides: the second type's own filter guides
-// (passes/backward_trace/shaders/second_type_guides.h; docs/caustics.md "Second-type guides"), written
-// from this frame's spheres (caustics.backward) so that the filter can run the second type on the
-// receiver seen through the glass instead of on the glass the camera G-buffer holds.
+// caustics.secondTypeGuides.clear, caustics.secondTypeGuides and caustics.secondTypeGuides.fill: the
+// second type's own filter guides (passes/backward_trace/shaders/second_type_guides.h and
+// second_type_guide_fill.h; docs/caustics.md "Second-type guides"), written from this frame's spheres
+// (caustics.backward), then filled where a pixel's sample made none, so that the filter can run the
+// second type on the receiver seen through the glass instead of on the glass the camera G-buffer holds.
 #include <cstddef>
 
+#include "backward_trace/second_type_guide_fill_bindings.h"
 #include "backward_trace/second_type_guides_bindings.h"
+#include "backward_trace/shaders/second_type_guide_fill.h"
 #include "backward_trace/shaders/second_type_guides.h"
 #include "caustic_maps/caustic_internal.h"
 #include "caustics/rhi/log.h"
@@ -50,10 +53,52 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SecondTypeG
     cmd.dispatch((h.width + 7) / 8, (h.height + 7) / 8, 1);
 }
 
+// caustics.secondTypeGuides.fill: the sphere-written guides, with holes filled from a neighbour.
+void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SecondTypeGuides& fromSpheres) {
+    SecondTypeGuides& g = f.secondTypeGuides;
+    const uint32_t w = f.width, h = f.height;
+    graph.addPass("caustics.secondTypeGuides.fill", [&](rg::PassBuilder& b) {
+        const rg::RgTexture in[] = {b.read(fromSpheres.depthMotion), b.read(fromSpheres.normal), b.read(fromSpheres.objectId),
+                                    b.read(f.in->gbuffer.objectId)};
+        g.depthMotion = b.write(b.createTexture("caustics.secondTypeDepthMotion",
+                                                guideDesc(w, h, rhi::Format::RGBA32_FLOAT, "caustics.secondTypeDepthMotion")));
+        g.normal = b.write(b.createTexture("caustics.secondTypeNormal",
+                                           guideDesc(w, h, rhi::Format::RGBA16_FLOAT, "caustics.secondTypeNormal")));
+        g.objectId = b.write(b.createTexture("caustics.secondTypeObjectId",
+                                             guideDesc(w, h, rhi::Format::R32_UINT, "caustics.secondTypeObjectId")));
+        CausticFrame fr = f;
+        SecondTypeGuides out = g;
+        return [=](rg::PassContext& ctx) {
+            CausticResources::Impl& r = *fr.res;
+            auto desc = PassBindingSet(shader_bindings::kSecondTypeGuideFillBindings, 0)
+                            .texture("sphereDepthMotion", ctx.texture(in[0]))
+                            .texture("sphereNormal", ctx.texture(in[1]))
+                            .texture("sphereObjectId", ctx.texture(in[2]))
+                            .texture("cameraObjectId", ctx.texture(in[3]))
+                            .texture("depthMotion", ctx.texture(out.depthMotion))
+                            .texture("normal", ctx.texture(out.normal))
+                            .texture("objectId", ctx.texture(out.objectId))
+                            .desc();
+            if (!desc) {
+                log(LogLevel::Error, "caustics.secondTypeGuides.fill: " + desc.message());
+                return;
+            }
+            rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideFillLayout, *desc);
+            if (!bound) return;
+            const shader::SecondTypeGuideFillParams push{{fr.width, fr.height}};
+            rhi::ICommandList& cmd = ctx.cmd();
+            cmd.setComputePipeline(r.secondTypeGuideFillPipeline);
+            cmd.setBindingSet(0, bound);
+            cmd.setPushConstants(&push, sizeof(push));
+            cmd.dispatch((fr.width + 7) / 8, (fr.height + 7) / 8, 1);
+        };
+    });
+}
+
 }  // namespace
 
 void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
-    SecondTypeGuides& g = f.secondTypeGuides;
+    SecondTypeGuides g;   // written from the spheres
     const uint32_t w = f.width, h = f.height;
     // Both passes bind the same set (one declaration); the clear reads the buffers without using them.
     for (bool clear : {true, false}) {
@@ -62,12 +107,12 @@ void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
             f.spheres = b.read(f.spheres, rg::Access::SampledRead);
             f.stats = b.read(f.stats, rg::Access::SampledRead);
             if (clear) {
-                g.depthMotion = b.write(b.createTexture("caustics.secondTypeDepthMotion",
-                                                        guideDesc(w, h, rhi::Format::RGBA32_FLOAT, "caustics.secondTypeDepthMotion")));
-                g.normal = b.write(b.createTexture("caustics.secondTypeNormal",
-                                                   guideDesc(w, h, rhi::Format::RGBA16_FLOAT, "caustics.secondTypeNormal")));
-                g.objectId = b.write(b.createTexture("caustics.secondTypeObjectId",
-                                                     guideDesc(w, h, rhi::Format::R32_UINT, "caustics.secondTypeObjectId")));
+                g.depthMotion = b.write(b.createTexture("caustics.sphereDepthMotion",
+                                                        guideDesc(w, h, rhi::Format::RGBA32_FLOAT, "caustics.sphereDepthMotion")));
+                g.normal = b.write(b.createTexture("caustics.sphereNormal",
+                                                   guideDesc(w, h, rhi::Format::RGBA16_FLOAT, "caustics.sphereNormal")));
+                g.objectId = b.write(b.createTexture("caustics.sphereObjectId",
+                                                     guideDesc(w, h, rhi::Format::R32_UINT, "caustics.sphereObjectId")));
             } else {
                 g.depthMotion = b.write(g.depthMotion, rg::Access::StorageReadWrite);
                 g.normal = b.write(g.normal, rg::Access::StorageReadWrite);
@@ -78,6 +123,7 @@ void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
             return [=](rg::PassContext& ctx) { recordGuides(ctx, fr, out, clear); };
         });
     }
+    addFillPass(graph, f, g);
 }
 
 }  // namespace caustics

@@ -41,6 +41,8 @@ struct CausticResources::Impl {
     rhi::ComputePipelineHandle specularPixelPipeline;   // backward_trace/specular_pixels_pass.cpp
     rhi::BindingLayoutHandle secondTypeGuideLayout;
     rhi::ComputePipelineHandle secondTypeGuidePipeline;   // backward_trace/second_type_guides_pass.cpp
+    rhi::BindingLayoutHandle secondTypeGuideFillLayout;
+    rhi::ComputePipelineHandle secondTypeGuideFillPipeline;
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
     CausticFilterPipelines filter;   // resolve + filter (caustic_filter/)

@@ -7,11 +7,13 @@
 #include "caustic_maps/photon_plan_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
 #include "backward_trace/second_type_guides_bindings.h"
+#include "backward_trace/second_type_guide_fill_bindings.h"
 #include "caustic_filter/combine_types_bindings.h"
 
 namespace caustics::shader_bindings {
 
 inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
-                                                   &kSecondTypeGuidesBindings, &kCombineTypesBindings};
+                                                   &kSecondTypeGuidesBindings, &kSecondTypeGuideFillBindings,
+                                                   &kCombineTypesBindings};
 
 }  // namespace caustics::shader_bindings
