@@ -4,6 +4,7 @@
 // (caustics.backward), then filled where a pixel's sample made none, so that the filter can run the
 // second type on the receiver seen through the glass instead of on the glass the camera G-buffer holds.
 #include <cstddef>
+#include <string>
 
 #include "backward_trace/second_type_guide_fill_bindings.h"
 #include "backward_trace/second_type_guides_bindings.h"
@@ -22,10 +23,17 @@ static_assert(sizeof(shader::GuideCamera) == sizeof(CameraConstants));
 static_assert(offsetof(shader::GuideCamera, prevViewProj) == offsetof(CameraConstants, prevViewProj));
 static_assert(shader::kGuideSphereCountSlot == kStatSpheres);
 
-rhi::TextureDesc guideDesc(uint32_t w, uint32_t h, rhi::Format format, const char* name) {
-    return rhi::TextureDesc().setSize(w, h).setFormat(format)
-        .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource)
-        .setDebugName(name);
+// The three guide textures, created and written by the pass being built: <prefix>DepthMotion, Normal, ObjectId.
+SecondTypeGuides createGuides(rg::PassBuilder& b, uint32_t w, uint32_t h, const std::string& prefix) {
+    auto make = [&](const char* suffix, rhi::Format format) {
+        const std::string name = prefix + suffix;
+        return b.write(b.createTexture(name, rhi::TextureDesc().setSize(w, h).setFormat(format)
+                                                 .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage |
+                                                           rhi::TextureUsage::CopySource)
+                                                 .setDebugName(name)));
+    };
+    return {make("DepthMotion", rhi::Format::RGBA32_FLOAT), make("Normal", rhi::Format::RGBA16_FLOAT),
+            make("ObjectId", rhi::Format::R32_UINT)};
 }
 
 // One dispatch of the guide pipeline over the image grid (clear: per pixel; else per sphere slot).
@@ -60,12 +68,7 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SecondTypeGuides
     graph.addPass("caustics.secondTypeGuides.fill", [&](rg::PassBuilder& b) {
         const rg::RgTexture in[] = {b.read(fromSpheres.depthMotion), b.read(fromSpheres.normal), b.read(fromSpheres.objectId),
                                     b.read(f.in->gbuffer.objectId)};
-        g.depthMotion = b.write(b.createTexture("caustics.secondTypeDepthMotion",
-                                                guideDesc(w, h, rhi::Format::RGBA32_FLOAT, "caustics.secondTypeDepthMotion")));
-        g.normal = b.write(b.createTexture("caustics.secondTypeNormal",
-                                           guideDesc(w, h, rhi::Format::RGBA16_FLOAT, "caustics.secondTypeNormal")));
-        g.objectId = b.write(b.createTexture("caustics.secondTypeObjectId",
-                                             guideDesc(w, h, rhi::Format::R32_UINT, "caustics.secondTypeObjectId")));
+        g = createGuides(b, w, h, "caustics.secondType");
         CausticFrame fr = f;
         SecondTypeGuides out = g;
         return [=](rg::PassContext& ctx) {
@@ -107,12 +110,7 @@ void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
             f.spheres = b.read(f.spheres, rg::Access::SampledRead);
             f.stats = b.read(f.stats, rg::Access::SampledRead);
             if (clear) {
-                g.depthMotion = b.write(b.createTexture("caustics.sphereDepthMotion",
-                                                        guideDesc(w, h, rhi::Format::RGBA32_FLOAT, "caustics.sphereDepthMotion")));
-                g.normal = b.write(b.createTexture("caustics.sphereNormal",
-                                                   guideDesc(w, h, rhi::Format::RGBA16_FLOAT, "caustics.sphereNormal")));
-                g.objectId = b.write(b.createTexture("caustics.sphereObjectId",
-                                                     guideDesc(w, h, rhi::Format::R32_UINT, "caustics.sphereObjectId")));
+                g = createGuides(b, w, h, "caustics.sphere");
             } else {
                 g.depthMotion = b.write(g.depthMotion, rg::Access::StorageReadWrite);
                 g.normal = b.write(g.normal, rg::Access::StorageReadWrite);
