@@ -51,9 +51,12 @@ struct SecondTypeGuideParams {
 CAUSTICS_CONST uint kGuideSphereCountSlot = 3u;   // caustics.stats' kStatSpheres (caustic_passes.h)
 // Motion of a receiver point that was behind last frame's camera: far off screen, so no history is found.
 CAUSTICS_CONST float kGuideNoHistory = -1.0e9f;
+// A receiver reached by a reflection can lie behind the camera (clip w <= 0): the filter divides by
+// depths, so the guide holds |w|, at least this (metres).
+CAUSTICS_CONST float kGuideMinDepth = 1.0e-3f;
 
 struct SecondTypeGuide {
-    float linearDepth;   // clip w of the receiver point
+    float linearDepth;   // |clip w| of the receiver point, at least kGuideMinDepth
     float2 motion;       // last frame's texel-centre position minus this frame's, pixels
     float previousDepth; // clip w last frame (0: behind last frame's camera, no history)
     float3 normal;
@@ -74,7 +77,7 @@ CAUSTICS_FN SecondTypeGuide secondTypeGuide(GuideCamera c, GuideSphere s, float2
     float4 now = guideClip(c.viewProj[0], c.viewProj[1], c.viewProj[2], c.viewProj[3], s.centre);
     float4 before = guideClip(c.prevViewProj[0], c.prevViewProj[1], c.prevViewProj[2], c.prevViewProj[3], s.centre);
     SecondTypeGuide g;
-    g.linearDepth = now.w;
+    g.linearDepth = max(abs(now.w), kGuideMinDepth);
     bool seen = before.w > 0.0f && now.w > 0.0f;
     g.motion = seen ? guideTexel(before, size) - guideTexel(now, size) : splat2(kGuideNoHistory);
     g.previousDepth = seen ? before.w : 0.0f;

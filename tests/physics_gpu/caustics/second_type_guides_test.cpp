@@ -147,7 +147,8 @@ TEST_F(SecondTypeGuides, MovingCameraHoldsTheFloorPointsScreenMotion) {
 // case (a glass ball's side caustic seen through a pane): the second type, filtered on its own guides
 // and reprojected with the receiver's motion, keeps its peak where the reference puts it for the last
 // camera (a history reprojected with the pane's depth would trail it by up to a frame's motion per
-// frame) and its energy.
+// frame) and its energy. Measured (offset 0): energy 0.9995, peak 0.07 px off; bounds: the 5 %
+// energy and 0.5 px.
 TEST_F(SecondTypeGuides, FilteredSecondTypeFollowsAMovingCamera) {
     IndependentCase c = plate();
     constexpr uint32_t kFrames = 8, kView = 96;

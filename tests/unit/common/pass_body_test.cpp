@@ -170,5 +170,15 @@ TEST(SecondTypeGuideBody, AReceiverBehindLastFramesCameraHasNoHistory) {
     EXPECT_EQ(g.motion.x, kGuideNoHistory);
 }
 
+// A reflection can reach a receiver behind the camera: the filter divides by the guide depth.
+TEST(SecondTypeGuideBody, AReceiverBehindTheCameraGetsAPositiveDepthAndNoHistory) {
+    GuideSphere s{};
+    s.centre = float3(0.0f, 0.0f, 3.0f);   // behind the camera at z = 2 looking towards -z
+    const glm::mat4 now = viewProjAt(0.0f);
+    SecondTypeGuide g = secondTypeGuide(guideCamera(now, now), s, float2(64.0f, 64.0f));
+    EXPECT_NEAR(g.linearDepth, 1.0f, 1e-5f);
+    EXPECT_EQ(g.previousDepth, 0.0f);
+}
+
 }  // namespace
 }  // namespace caustics::shader
