@@ -264,7 +264,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     addResolvePass(graph, f, out);
     if (!f.in->settings.filter) return;
     const SecondTypeGuides& guides = f.secondTypeGuides;
-    if (!guides.valid() || !f.history->secondType || !f.separateTypes) {
+    if (!f.in->settings.filterSecondTypeApart || !guides.valid() || !f.history->secondType || !f.separateTypes) {
         out.filterTiles = addFilterChain(graph, f, out.radiance, false);
         return;
     }

@@ -144,7 +144,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
     if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
     // The second type is filtered apart, on its own guides (docs/caustics.md "Second-type guides").
-    const bool filterTypesApart = in.settings.filter && in.settings.secondType;
+    const bool filterTypesApart = in.settings.filter && in.settings.secondType && in.settings.filterSecondTypeApart;
     if (filterTypesApart) {
         if (!history->secondType) {
             history->secondType = std::make_shared<CausticViewHistory>();

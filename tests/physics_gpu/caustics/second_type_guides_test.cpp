@@ -162,6 +162,7 @@ TEST_F(SecondTypeGuides, FilteredSecondTypeFollowsAMovingCamera) {
     }
     CausticsSettings s = secondTypeSettings(512, 1.0f);
     s.filter = true;
+    s.filterSecondTypeApart = true;
     s.seed = seedOffset() + 1;
     auto run = runCaustics(*device, c.module, cameras, kView, kView, s);
     ASSERT_TRUE(run) << run.message();

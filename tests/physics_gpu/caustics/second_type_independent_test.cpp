@@ -150,6 +150,7 @@ void expectOneFilteredFrameWithoutHoles(rhi::IDevice& device, const IndependentC
                                         uint32_t minPixels) {
     CausticsSettings s = secondTypeSettings(512, 1.0f);
     s.filter = true;
+    s.filterSecondTypeApart = true;
     s.seed = seedOffset() + 1;
     auto filtered = runCaustics(device, c.module, c.camera, kSize, kSize, s);
     ASSERT_TRUE(filtered) << filtered.message();
