@@ -12,8 +12,9 @@ namespace caustics {
 
 struct CausticFilterPipelines {
     rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout, atrousLayout,
-        atrousLastLayout, outputLayout;
+        atrousLastLayout, outputLayout, combineLayout;
     rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrous, atrousLast, output;
+    rhi::ComputePipelineHandle combine;   // first + second type, each filtered on its own guides
 
     static Result<CausticFilterPipelines> create(rhi::IDevice& device);
 };

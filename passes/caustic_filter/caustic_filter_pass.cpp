@@ -26,6 +26,10 @@
 #include "caustic_filter/temporal_bindings.h"
 #include "caustic_filter/shaders/variance.h"
 #include "caustic_filter/variance_bindings.h"
+#include "caustic_filter/combine_types_bindings.h"
+#include "caustic_filter/shaders/combine_types.h"
+#include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 namespace {
@@ -111,8 +115,9 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
 }
 
 // caustics.temporal: last frame's history reprojected into this frame's (ping-pong, no copy).
+// motionGuides: f's G-buffer is the second type's guides (docs/caustics.md "Second-type guides").
 void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, FilterFrame& ff, rg::RgTexture raw,
-                     bool historyUsable, uint32_t readCopy) {
+                     bool historyUsable, uint32_t readCopy, bool motionGuides) {
     const GBuffer& g = f.in->gbuffer;
     const uint32_t next = readCopy ^ 1u, frameIndex = f.in->frameIndex;
     graph.addPass("caustics.temporal", [&](rg::PassBuilder& b) {
@@ -130,7 +135,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         FilterTiles t = ff.tiles;
         rg::RgTexture guide = ff.guide;
         const float pre = ff.preExposure;
-        const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f};
+        const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f,
+                                             motionGuides ? 1u : 0u};
         return [=](rg::PassContext& ctx) {
             // Only if the last EXECUTED frame wrote the copy this one reads (a dropped graph breaks it),
             // with the pre-exposure that frame stored it with.
@@ -167,13 +173,10 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
     graph.markOutput(hist.guides);
 }
 
-}  // namespace
-
-void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
-    addResolvePass(graph, f, out);
+// The filter over `raw` (in place: its last pass writes the result into it over the listed tiles),
+// guided by f's G-buffer, with f's history; returns the tile list's arguments.
+rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTexture& raw, bool motionGuides) {
     const CausticsSettings& s = f.in->settings;
-    if (!s.filter) return;
-
     const uint32_t w = f.width, h = f.height;
     const GBuffer& g = f.in->gbuffer;
     // The view's history (caustic_passes.h): valid only after an executed frame of this view. A
@@ -193,15 +196,12 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     const uint32_t readCopy = vh.builtParity;
     vh.builtParity ^= 1u;
     vh.builtValid = true;
-    // caustics.resolve's combined radiance: this frame's photons, zero in every tile the list leaves out;
-    // the filter's last pass writes its result into it over the listed tiles.
-    const rg::RgTexture raw = out.radiance;
+    // caustics.resolve's radiance: this frame's photons, zero in every tile the list leaves out.
     FilterFrame ff;
     ff.tiles = addTilePasses(graph, f, hist, raw, historyUsable);
     ff.poolTiles = f.history->poolTiles;
     ff.preExposure = filterPreExposure(f);
-    out.filterTiles = ff.tiles.args;
-    addTemporalPass(graph, f, hist, ff, raw, historyUsable, readCopy);
+    addTemporalPass(graph, f, hist, ff, raw, historyUsable, readCopy, motionGuides);
     const rg::RgTexture color = hist.color, guides = hist.guides;
 
     if (s.atrousIterations == 0) {
@@ -209,9 +209,9 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
             b.setStages(rhi::PipelineStages::Compute);
             const rg::RgTexture in[] = {b.read(color), b.read(guides)};
             readTiles(b, ff.tiles, false);
-            out.radiance = b.write(raw, rg::Access::StorageReadWrite);
+            raw = b.write(raw, rg::Access::StorageReadWrite);
             CausticFrame fr = f;
-            rg::RgTexture o = out.radiance;
+            rg::RgTexture o = raw;
             FilterTiles t = ff.tiles;
             const shader::FilterOutputParams push{int32_t(w), int32_t(h), 1.0f / ff.preExposure};
             return [=](rg::PassContext& ctx) {
@@ -224,7 +224,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
                                  push, t.args);
             };
         });
-        return;
+        return ff.tiles.args;
     }
     rg::RgTexture radiance;
     graph.addPass("caustics.variance", [&](rg::PassBuilder& b) {
@@ -251,8 +251,57 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
         };
     });
 
-    out.radiance = raw;
-    for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, ff, radiance, out.radiance);
+    for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, ff, radiance, raw);
+    return ff.tiles.args;
+}
+
+// caustics.filterCombine: caustics.radiance = both types, each filtered on its own guides.
+void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
+    graph.addPass("caustics.filterCombine", [&](rg::PassBuilder& b) {
+        const rg::RgTexture first = b.read(out.firstType), second = b.read(out.secondType);
+        out.radiance = b.write(out.radiance);
+        CausticFrame fr = f;
+        rg::RgTexture o = out.radiance;
+        const shader::CombineTypesParams push{{f.width, f.height}};
+        return [=](rg::PassContext& ctx) {
+            auto desc = PassBindingSet(shader_bindings::kCombineTypesBindings, 0)
+                            .texture("firstType", ctx.texture(first))
+                            .texture("secondType", ctx.texture(second))
+                            .texture("radiance", ctx.texture(o))
+                            .desc();
+            if (!desc) {
+                log(LogLevel::Error, "caustics.filterCombine: " + desc.message());
+                return;
+            }
+            dispatchImage(ctx, *fr.res, fr.res->filter.combine, fr.res->filter.combineLayout, *desc, push, fr.width, fr.height);
+        };
+    });
+}
+
+}  // namespace
+
+void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
+    addResolvePass(graph, f, out);
+    if (!f.in->settings.filter) return;
+    const SecondTypeGuides& guides = f.secondTypeGuides;
+    if (!f.in->settings.filterSecondTypeApart || !guides.valid() || !f.history->secondType || !f.separateTypes) {
+        out.filterTiles = addFilterChain(graph, f, out.radiance, false);
+        return;
+    }
+    // The first type lies on what the camera sees: its G-buffer. The second lies on the receiver seen
+    // through the glass: filtered apart on that receiver's guides, with its own history, reprojected
+    // with the receiver's motion (docs/caustics.md "Second-type guides"); then both are summed.
+    out.filterTiles = addFilterChain(graph, f, out.firstType, false);
+    CausticFrameInputs receiver = *f.in;
+    receiver.gbuffer.linearDepth = guides.depthMotion;
+    receiver.gbuffer.normalRoughness = guides.normal;
+    receiver.gbuffer.objectId = guides.objectId;
+    CausticFrame secondFrame = f;
+    secondFrame.in = &receiver;
+    secondFrame.history = f.history->secondType.get();
+    addFilterChain(graph, secondFrame, out.secondType, true);
+    f.camera = secondFrame.camera;
+    addCombinePass(graph, f, out);
 }
 
 }  // namespace caustics

@@ -14,6 +14,10 @@
 #include "caustic_filter/variance_bindings.h"
 #include "module/pass_bindings.h"
 
+#include "caustic_filter/combine_types_bindings.h"
+#include "caustic_filter/shaders/combine_types.h"
+#include "module/pass_bindings.h"
+
 namespace caustics {
 
 static_assert(sizeof(shader::AtrousParams) == 20);
@@ -44,6 +48,9 @@ Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
     CAUSTICS_TRY(p.atrous, makeComputePipeline(d, "caustic_filter/atrous.comp", p.atrousLayout, sizeof(shader::AtrousParams)));
     CAUSTICS_TRY(p.atrousLast,
                  makeComputePipeline(d, "caustic_filter/atrous_last.comp", p.atrousLastLayout, sizeof(shader::AtrousParams)));
+    CAUSTICS_TRY(p.combineLayout, createPassBindingLayout(d, shader_bindings::kCombineTypesBindings, 0, rhi::ShaderStage::All));
+    CAUSTICS_TRY(p.combine, makeComputePipeline(d, "caustic_filter/combine_types.comp", p.combineLayout,
+                                                sizeof(shader::CombineTypesParams)));
     return p;
 }
 

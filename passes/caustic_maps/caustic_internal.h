@@ -44,6 +44,10 @@ struct CausticResources::Impl {
     rhi::ComputePipelineHandle gridFromCount;     // caustic_grid_pass.cpp
     rhi::BindingLayoutHandle specularPixelLayout;
     rhi::ComputePipelineHandle specularPixelPipeline;   // backward_trace/specular_pixels_pass.cpp
+    rhi::BindingLayoutHandle secondTypeGuideLayout;
+    rhi::ComputePipelineHandle secondTypeGuidePipeline;   // backward_trace/second_type_guides_pass.cpp
+    rhi::BindingLayoutHandle secondTypeGuideFillLayout;
+    rhi::ComputePipelineHandle secondTypeGuideFillPipeline;
     rhi::StateObjectHandle forwardState, backwardState, gatherState;
     rhi::ShaderTableHandle forwardTable, backwardTable, gatherTable;
     CausticFilterPipelines filter;   // resolve + filter (caustic_filter/)
@@ -103,6 +107,7 @@ struct CausticFrame {
     SphereCountReadback* sphereReadback = nullptr;   // this view's and slot's
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereBlas, sphereTlas;
+    SecondTypeGuides secondTypeGuides;   // caustics.secondTypeGuides (invalid without the second type)
     CausticMapPlan plan;
     // The buffer the second type accumulates into: its own, or the first type's (one for both).
     rg::RgBuffer& secondTypeTarget() { return separateTypes ? radiance2 : radiance1; }
@@ -128,7 +133,8 @@ Status createForwardState(CausticResources::Impl& r, const rhi::BindingLayoutHan
 Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, const rhi::BindingLayoutHandle& scene,
                        const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table);
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
-void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);   // backward_trace/specular_pixels_pass.cpp
+void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);
+void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f);   // backward_trace/second_type_guides_pass.cpp   // backward_trace/specular_pixels_pass.cpp
 // backward_trace/sphere_budget.cpp: the slot's read-back of the sphere count and f.sphereCapacity;
 // the capacity from it (when the graph executes); the pass that copies this frame's count.
 void prepareSphereBudget(CausticFrame& f);

@@ -34,6 +34,7 @@ void appendHistoryMemory(const CausticViewHistory& history, const std::string& p
         addMemoryEntry(out, prefix + ".tiles" + n, history.tiles[i]);
         addMemoryEntry(out, prefix + ".slots" + n, history.slots[i]);
     }
+    if (history.secondType) appendHistoryMemory(*history.secondType, prefix + ".second_type", out);
     MemoryEntry readbacks{prefix + ".tile_count_readbacks", 0, MemoryKind::Persistent};
     size_t count = 0;
     for (const rhi::BufferHandle& b : history.tileCounts)

@@ -143,6 +143,15 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     if (in.settings.secondType) CAUSTICS_CHECK(res->ensureSizeResources(pixels, firstSphereAllocation, res->frameSlot));
     CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
     if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
+    // The second type is filtered apart, on its own guides (docs/caustics.md "Second-type guides").
+    const bool filterTypesApart = in.settings.filter && in.settings.secondType && in.settings.filterSecondTypeApart;
+    if (filterTypesApart) {
+        if (!history->secondType) {
+            history->secondType = std::make_shared<CausticViewHistory>();
+            history->secondType->viewId = history->viewId;
+        }
+        CAUSTICS_CHECK(res->ensureHistory(*history->secondType, in.gbuffer.width, in.gbuffer.height));
+    }
 
     CausticFrame f;
     f.in = &in;
@@ -150,7 +159,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     f.history = history;
     f.width = in.gbuffer.width;
     f.height = in.gbuffer.height;
-    f.separateTypes = in.separateTypes;
+    f.separateTypes = in.separateTypes || filterTypesApart;
     f.wideFixedPoint = !res->floatAtomics && res->int64Atomics;
     f.fixedPointScale = fixedPointScale(f.wideFixedPoint, in.settings.exposure * in.scene->exposure);
     f.plan = std::move(plan);
@@ -174,6 +183,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     out.stats = f.stats;
     out.layerPlans = f.layerPlans;
     out.spheres = f.spheres;
+    out.secondTypeGuides = f.secondTypeGuides;
     out.mapObjectIds = f.mapIds;
     out.plan = std::move(f.plan);
     return out;

@@ -15,6 +15,10 @@
 #include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/grid_from_count.h"
 #include "caustic_maps/shaders/photon_plan.h"
+#include "backward_trace/second_type_guide_fill_bindings.h"
+#include "backward_trace/second_type_guides_bindings.h"
+#include "backward_trace/shaders/second_type_guide_fill.h"
+#include "backward_trace/shaders/second_type_guides.h"
 #include "caustics/rhi/log.h"
 #include "module/pass_bindings.h"
 
@@ -98,6 +102,12 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
                                           sizeof(shader::GridFromCountParams)));
     CAUSTICS_TRY(m.specularPixelLayout, makeBindingLayout(d, {{0, TX}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
     CAUSTICS_TRY(m.specularPixelPipeline, compute(d, "backward_trace/specular_pixels.comp", {m.specularPixelLayout}, 12));
+    CAUSTICS_TRY(m.secondTypeGuideLayout, createPassBindingLayout(d, shader_bindings::kSecondTypeGuidesBindings, 0, ShaderStage::All));
+    CAUSTICS_TRY(m.secondTypeGuidePipeline, compute(d, "backward_trace/second_type_guides.comp", {m.secondTypeGuideLayout},
+                                                    sizeof(shader::SecondTypeGuideParams)));
+    CAUSTICS_TRY(m.secondTypeGuideFillLayout, createPassBindingLayout(d, shader_bindings::kSecondTypeGuideFillBindings, 0, ShaderStage::All));
+    CAUSTICS_TRY(m.secondTypeGuideFillPipeline, compute(d, "backward_trace/second_type_guide_fill.comp", {m.secondTypeGuideFillLayout},
+                                                        sizeof(shader::SecondTypeGuideFillParams)));
     CAUSTICS_TRY(m.filter, CausticFilterPipelines::create(d));
 
     // Gather: sphere.rint + gather.rahit over the sphere TLAS (procedural hit group).

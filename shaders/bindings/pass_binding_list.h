@@ -17,6 +17,9 @@
 #include "forward_trace/forward_bindings.h"
 #include "gbuffer/gbuffer_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
+#include "backward_trace/second_type_guides_bindings.h"
+#include "backward_trace/second_type_guide_fill_bindings.h"
+#include "caustic_filter/combine_types_bindings.h"
 
 namespace caustics::shader_bindings {
 
@@ -26,6 +29,8 @@ inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRema
                                                      &kCausticFilterTilesBindings, &kCausticTileListBindings, &kCausticTemporalBindings,
                                                      &kForwardBindings, &kForwardFixedBindings, &kForwardFixed64Bindings,
                                                      &kEmittersBindings, &kCausticMapBindings,
-                                                     &kDirectLightingBindings, &kGBufferBindings};
+                                                     &kDirectLightingBindings, &kGBufferBindings,
+                                                     &kSecondTypeGuidesBindings, &kSecondTypeGuideFillBindings,
+                                                     &kCombineTypesBindings};
 
 }  // namespace caustics::shader_bindings

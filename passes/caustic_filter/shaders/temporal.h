@@ -22,6 +22,9 @@ struct TemporalParams {
     float maxHistory;     // CausticsSettings::filterMaxHistory
     float preExposure;    // this frame's (docs/caustics.md "Memory")
     float historyScale;   // this frame's pre-exposure over the one the history was stored with
+    // 1: gLinearDepth is the second type's guide (depth, motion x, motion y, last frame's depth;
+    // docs/caustics.md "Second-type guides"): reproject with the receiver's own motion, not the camera ray's.
+    uint motionGuides;
 };
 CAUSTICS_CONST float kTemporalRejectDeviations = 3.0f;
 CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments

@@ -121,8 +121,12 @@ void temporalThread(uint group, uint2 local) {
     if (params.historyValid != 0u && id != 0u && depth > 0.0f) {
         float3 world = cameraWorldPosition(camera, float2(p) + 0.5f, depth);
         float4 clip = mul(camera.prevViewProj, float4(world, 1.0f));
+        float4 guide = CAUSTICS_TEXEL(gLinearDepth, p);
+        if (params.motionGuides != 0u) clip.w = guide.w;
         if (clip.w > 0.0f) {
-            float2 prev = (clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f;   // texel-centre coordinates
+            // Texel-centre coordinates.
+            float2 prev = params.motionGuides != 0u ? float2(p) + float2(guide.y, guide.z)
+                                                    : (clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f;
             int2 base = int2(floor(prev));
             float2 f = prev - float2(base);
             float tolerance = clip.w * temporalRelativeDepthTolerance(camera.forward.w, float(size.y), n,

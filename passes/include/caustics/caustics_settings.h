@@ -66,6 +66,11 @@ struct CausticsSettings {
     uint32_t maxStoredHits = 1u << 20;  // forward diffuse hits kept for the second-type gather
     // The caustic filter (docs/caustics.md "Filter"; SVGF-like, the paper measured with it off).
     bool filter = true;
+    // Filter the second type apart, on the receiver seen through the glass (its own guides, history and
+    // motion; docs/caustics.md "Second-type guides"). Off by default: it costs a second radiance buffer,
+    // two full-screen type textures, the guides and a second history (160 MiB at 1080p in all, over the
+    // filter's 64 MiB budget, MemoryBudget.*).
+    bool filterSecondTypeApart = false;
     // History length cap, frames: with a still view the temporal step is the plain mean of the last
     // frames until this many, then an exponential average with weight 1 / filterMaxHistory.
     uint32_t filterMaxHistory = 32;

@@ -131,6 +131,9 @@ struct CausticViewHistory {
     // The CausticsView this history belongs to (0: CausticResources' own): per-view state of the
     // module (the sphere-count readbacks) is keyed by it, never by an address.
     uint64_t viewId = 0;
+    // The second type's own history, filtered on the receiver seen through the glass (docs/caustics.md
+    // "Second-type guides"); made when a frame filters with the second type on.
+    std::shared_ptr<CausticViewHistory> secondType;
 };
 
 // Objects that live across frames: pipelines, the sphere BLAS/TLAS. Create once per device and scene
@@ -192,6 +195,16 @@ struct CausticFrameInputs {
     bool separateTypes = true;
 };
 
+// The second type's own filter guides (caustics.secondTypeGuides; docs/caustics.md "Second-type guides"):
+// at a pixel whose camera path went through glass to a diffuse receiver, that receiver's linear depth
+// (clip w) and screen motion (last frame's texel-centre position minus this frame's, pixels) in
+// depthMotion (RGBA32F: depth, motion x, motion y, last frame's depth), its normal facing the arriving path (RGBA16F xyz)
+// and its object id (R32UI, instance + 1); zeros (id 0) at every other pixel.
+struct SecondTypeGuides {
+    rg::RgTexture depthMotion, normal, objectId;
+    bool valid() const { return depthMotion.valid() && normal.valid() && objectId.valid(); }
+};
+
 struct CausticOutputs {
     rg::RgTexture radiance;     // RGBA32F W x H, first + second type, filtered when settings.filter
     rg::RgTexture firstType;    // RGBA32F, unfiltered (invalid unless separateTypes)
@@ -203,6 +216,7 @@ struct CausticOutputs {
     rg::RgBuffer layerPlans;    // CausticLayerPlanGpu per plan.maps entry (invalid without maps)
     rg::RgBuffer spheres;       // CausticSphere[W x H], the first min(kStatSpheres, kStatSphereCapacity)
                                 // valid (invalid when the second type did not run)
+    SecondTypeGuides secondTypeGuides;   // invalid unless the second type ran (maps planned, settings.secondType)
     rg::RgBuffer filterTiles;   // uint32 (tiles the filter ran on, 1, 1) when settings.filter (docs/caustics.md "Tiles")
     rg::RgTexture mapObjectIds; // R32_UINT array, one layer per planned map (instance + 1; invalid if none)
     CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped

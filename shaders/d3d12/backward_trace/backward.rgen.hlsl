@@ -132,7 +132,11 @@ void main() {
                 continue;
             }
         }
-        if (events == 0u) break;
+        // Seen directly. On the specular surface itself (its diffuse lobe) the first-type pass splats into
+        // this pixel already. A ray whose jitter crossed the glass's silhouette onto a diffuse surface
+        // does not: that pass splats only where the G-buffer (here the glass) shows the receiver. Its
+        // sphere gathers the first-type light with throughput 1 (docs/caustics.md, "Glass edges").
+        if (events == 0u && sceneMaterialIsSpecular(h.material)) break;
         float3 nFacing = dot(h.shadingNormal, dir) < 0.0f ? h.shadingNormal : -h.shadingNormal;
         float radius = pc.worldRadius;
         if (pc.radiusPolicy == 0u) {

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <string>
 
+#include <glm/gtc/packing.hpp>
+
 #include "caustics/frame_context.h"
 #include "caustics/scene_bindings.h"
 #include "gbuffer/gbuffer_pass.h"
@@ -105,6 +107,9 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
             if (out.spheres.valid()) graph.markOutput(out.spheres, ResourceState::CopySource);
             if (out.layerPlans.valid()) graph.markOutput(out.layerPlans, ResourceState::CopySource);
             if (out.filterTiles.valid()) graph.markOutput(out.filterTiles, ResourceState::CopySource);
+            if (out.secondTypeGuides.valid())
+                for (rg::RgTexture t : {out.secondTypeGuides.depthMotion, out.secondTypeGuides.normal, out.secondTypeGuides.objectId})
+                    graph.markOutput(t, ResourceState::CopySource);
         } else {
             graph.markOutput(out.radiance);
         }
@@ -131,6 +136,10 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         const uint64_t planBytes = std::max<uint64_t>(out.plan.maps.size(), 1) * sizeof(CausticLayerPlanGpu);
         CAUSTICS_TRY(BufferHandle rbPlans, readbackBuffer(device, planBytes));
         CAUSTICS_TRY(BufferHandle rbTiles, readbackBuffer(device, 4));
+        const SecondTypeGuides& guides = out.secondTypeGuides;
+        CAUSTICS_TRY(BufferHandle rbGuideDepth, readbackBuffer(device, pixels * 16));
+        CAUSTICS_TRY(BufferHandle rbGuideNormal, readbackBuffer(device, pixels * 8));
+        CAUSTICS_TRY(BufferHandle rbGuideId, readbackBuffer(device, pixels * 4));
         CAUSTICS_TRY(CommandListHandle copy, device.createCommandList());
         copy->begin();
         copy->copyTextureToBuffer(rbFirst, 0, graph.texture(out.firstType));
@@ -143,6 +152,11 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         if (out.spheres.valid()) copy->copyBuffer(rbSpheres, 0, graph.buffer(out.spheres), 0, sphereBytes);
         if (out.layerPlans.valid()) copy->copyBuffer(rbPlans, 0, graph.buffer(out.layerPlans), 0, planBytes);
         if (out.filterTiles.valid()) copy->copyBuffer(rbTiles, 0, graph.buffer(out.filterTiles), 0, 4);
+        if (guides.valid()) {
+            copy->copyTextureToBuffer(rbGuideDepth, 0, graph.texture(guides.depthMotion));
+            copy->copyTextureToBuffer(rbGuideNormal, 0, graph.texture(guides.normal));
+            copy->copyTextureToBuffer(rbGuideId, 0, graph.texture(guides.objectId));
+        }
         copy->end();
         CAUSTICS_TRY(uint64_t copyFence, device.submit(copy));
         CAUSTICS_CHECK(device.waitForFence(copyFence));
@@ -158,6 +172,12 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         if (out.spheres.valid())
             run.spheres = fetch<CausticSphere>(device, rbSpheres, std::min(run.stats[kStatSpheres], run.stats[kStatSphereCapacity]));
         if (out.filterTiles.valid()) run.filterTiles = fetch<uint32_t>(device, rbTiles, 1).at(0);
+        if (guides.valid()) {
+            run.guideDepthMotion = fetch<glm::vec4>(device, rbGuideDepth, pixels);
+            for (const glm::uvec2& h : fetch<glm::uvec2>(device, rbGuideNormal, pixels))
+                run.guideNormal.push_back(glm::vec4(glm::unpackHalf2x16(h.x), glm::unpackHalf2x16(h.y)));
+            run.guideObjectId = fetch<uint32_t>(device, rbGuideId, pixels);
+        }
         run.plan = out.plan;
         if (out.layerPlans.valid()) run.layerPlans = fetch<CausticLayerPlanGpu>(device, rbPlans, out.plan.maps.size());
     }

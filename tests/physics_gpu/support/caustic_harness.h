@@ -20,6 +20,10 @@ struct CausticRun {
     std::vector<CausticHit> hits;                            // min(attempts, maxStoredHits)
     std::vector<CausticSphere> spheres;                      // the frame's spheres, in append order (secondType on)
     std::vector<float> linearDepth;
+    // The second type's own guides (CausticOutputs::secondTypeGuides; empty without the second type):
+    // receiver depth, motion x, motion y, 0 / receiver normal / receiver object id.
+    std::vector<glm::vec4> guideDepthMotion, guideNormal;
+    std::vector<uint32_t> guideObjectId;
     std::vector<uint32_t> objectId;
     uint32_t filterTiles = ~0u;                              // tiles the filter ran on (settings.filter)
     CausticMapPlan plan;

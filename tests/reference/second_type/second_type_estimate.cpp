@@ -40,7 +40,9 @@ struct ChainEnd {
 
 // Follows o + t d through the solids until the floor or a miss. radiance: camera path ((n1/n2)^2 per
 // refraction); otherwise a photon (flux conserved). Reaching the floor counts after >= 1 event only.
-ChainEnd followChain(const Scene& scene, Vec3 o, Vec3 d, bool radiance, uint32_t maxEvents, Rng& rng) {
+// refractOnly: every dielectric interface refracts (where it can), instead of picking a Fresnel lobe.
+ChainEnd followChain(const Scene& scene, Vec3 o, Vec3 d, bool radiance, uint32_t maxEvents, Rng& rng,
+                     bool refractOnly = false, bool direct = false) {
     ChainEnd end;
     Vec3 weight(1.0);
     int inside = -1;   // object whose volume the current segment runs through
@@ -57,7 +59,7 @@ ChainEnd followChain(const Scene& scene, Vec3 o, Vec3 d, bool radiance, uint32_t
             }
         }
         if (nearest < 0 || tFloor < hit.t) {
-            if (std::isfinite(tFloor) && events > 0 && inside < 0) {
+            if (std::isfinite(tFloor) && (events > 0 || direct) && inside < 0) {
                 end.onFloor = true;
                 end.position = o + tFloor * d;
                 end.weight = weight;
@@ -80,7 +82,7 @@ ChainEnd followChain(const Scene& scene, Vec3 o, Vec3 d, bool radiance, uint32_t
         } else {
             double n1 = entering ? 1.0 : optic.ior, n2 = entering ? optic.ior : 1.0;
             Vec3 t;
-            if (rng.next() >= dielectricReflectance(cosI, n1, n2) && refracted(d, nFacing, n1, n2, t)) {
+            if ((refractOnly || rng.next() >= dielectricReflectance(cosI, n1, n2)) && refracted(d, nFacing, n1, n2, t)) {
                 next = t;
                 if (radiance) weight *= (n1 / n2) * (n1 / n2);
                 inside = entering ? nearest : -1;
@@ -205,24 +207,34 @@ FloorHistogram traceFloorPhotons(const Scene& scene, const EstimateOptions& o) {
     return f;
 }
 
+Vec3 pinholeRay(const Pinhole& c, uint32_t width, uint32_t height, double px, double py) {
+    Vec3 forward = glm::normalize(c.target - c.eye);
+    Vec3 right = glm::normalize(glm::cross(forward, c.up));
+    Vec3 up = glm::cross(right, forward);
+    double tanHalf = std::tan(0.5 * c.verticalFov), aspect = double(width) / double(height);
+    double sx = 2.0 * px / width - 1.0, sy = 1.0 - 2.0 * py / height;
+    return glm::normalize(forward + (sx * tanHalf * aspect) * right + (sy * tanHalf) * up);
+}
+
+bool refractedFloorPoint(const Scene& scene, const Vec3& eye, const Vec3& d, uint32_t maxEvents, Vec3& point) {
+    Rng unused{0};
+    ChainEnd end = followChain(scene, eye, d, true, maxEvents, unused, true);
+    point = end.position;
+    return end.onFloor;
+}
+
 SecondTypeImage renderSecondType(const Scene& scene, const Pinhole& c, const FloorHistogram& floor, const EstimateOptions& o) {
     SecondTypeImage img;
     img.width = o.width;
     img.height = o.height;
     img.radiance.assign(size_t(o.width) * o.height, Vec3(0.0));
-    Vec3 forward = glm::normalize(c.target - c.eye);
-    Vec3 right = glm::normalize(glm::cross(forward, c.up));
-    Vec3 up = glm::cross(right, forward);
-    double tanHalf = std::tan(0.5 * c.verticalFov), aspect = double(o.width) / double(o.height);
     for (uint32_t y = 0; y < o.height; ++y)
         for (uint32_t x = 0; x < o.width; ++x) {
             Vec3 sum(0.0);
             for (uint32_t s = 0; s < o.pathsPerPixel; ++s) {
                 Rng rng = pathRng(o.seed, 2, (uint64_t(y) * o.width + x) * o.pathsPerPixel + s);
-                double px = x + rng.next(), py = y + rng.next();
-                double sx = 2.0 * px / o.width - 1.0, sy = 1.0 - 2.0 * py / o.height;
-                Vec3 d = glm::normalize(forward + (sx * tanHalf * aspect) * right + (sy * tanHalf) * up);
-                ChainEnd end = followChain(scene, c.eye, d, true, o.maxEvents, rng);
+                Vec3 d = pinholeRay(c, o.width, o.height, x + rng.next(), y + rng.next());
+                ChainEnd end = followChain(scene, c.eye, d, true, o.maxEvents, rng, false, o.countDirectPaths);
                 if (!end.onFloor) continue;
                 ++img.pathsOnFloor;
                 sum += end.weight * (scene.floorAlbedo / kPi) * floor.lookup(end.position.x, end.position.z);

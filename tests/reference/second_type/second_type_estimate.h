@@ -37,6 +37,9 @@ struct EstimateOptions {
     uint32_t width = 128, height = 128;
     uint32_t pathsPerPixel = 64;
     uint32_t maxEvents = 8;      // specular events per path (photon or camera)
+    // Camera paths that reach the floor with no specular event read the histogram too: the image is then
+    // the first and second type together (the glass-edge test), else the second type alone.
+    bool countDirectPaths = false;
     uint64_t seed = 0;
 };
 
@@ -48,6 +51,15 @@ struct SecondTypeImage {
     std::vector<Vec3> radiance;   // row 0 = top; cd/m^2
     uint64_t pathsOnFloor = 0;    // camera paths that reached the floor after >= 1 specular event
 };
+
+// The unit direction through image point (px, py) (pixels, (0, 0) the top-left corner) of a
+// width x height image.
+Vec3 pinholeRay(const Pinhole& camera, uint32_t width, uint32_t height, double px, double py);
+
+// The floor point that the ray eye + t d reaches through the solids when every dielectric interface
+// refracts (the most probable lobe; conductors reflect): false if it reaches the floor after no event,
+// or not at all.
+bool refractedFloorPoint(const Scene& scene, const Vec3& eye, const Vec3& d, uint32_t maxEvents, Vec3& point);
 
 // Radiance of the floor's caustic seen through the specular chain, per pixel.
 SecondTypeImage renderSecondType(const Scene& scene, const Pinhole& camera, const FloorHistogram& floor,

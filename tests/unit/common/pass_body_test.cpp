@@ -2,7 +2,10 @@
 // type-checks the code the GLSL and HLSL entries run, and these tests pin its behaviour.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "composite/shaders/composite.h"
 #include "direct_lighting/shaders/direct_light.h"
@@ -12,6 +15,7 @@
 #include "forward_trace/shaders/forward.h"
 #include "gbuffer/shaders/gbuffer.h"
 #include "gbuffer/shaders/remap_object_ids.h"
+#include "backward_trace/shaders/second_type_guides.h"
 
 namespace caustics::shader {
 
@@ -231,6 +235,59 @@ TEST(DirectLightBody, PunctualLightsFallOffWithTheSquareOfTheDistanceInsideTheir
 TEST(GBufferBody, NormalIsUnitAndFacesTheViewerWhateverTheWinding) {
     EXPECT_EQ(gbufferFacingNormal(float3(0.0f, 0.0f, -2.0f), float3(0.0f, 0.0f, 1.0f)), float3(0.0f, 0.0f, 1.0f));
     EXPECT_EQ(gbufferFacingNormal(float3(0.0f, 3.0f, 0.0f), float3(0.0f, 1.0f, 1.0f)), float3(0.0f, 1.0f, 0.0f));
+// A camera 2 m up looking down -z's way at the origin; `shift` moves it along x.
+glm::mat4 viewProjAt(float shift) {
+    return glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f) *
+           glm::lookAt(glm::vec3(shift, 0.0f, 2.0f), glm::vec3(shift, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
+GuideCamera guideCamera(const glm::mat4& now, const glm::mat4& before) {
+    GuideCamera c{};
+    std::memcpy(c.viewProj, &now, sizeof(now));
+    std::memcpy(c.prevViewProj, &before, sizeof(before));
+    return c;
+}
+
+TEST(SecondTypeGuideBody, HoldsTheReceiversDepthAndItsShiftBetweenTheTwoProjections) {
+    GuideSphere s{};
+    s.centre = float3(0.3f, -0.2f, 0.0f);
+    s.normal = float3(0.0f, 0.0f, 1.0f);
+    s.objectId = 7;
+    const glm::mat4 now = viewProjAt(0.0f), before = viewProjAt(-0.1f);
+    SecondTypeGuide g = secondTypeGuide(guideCamera(now, before), s, float2(64.0f, 64.0f));
+    auto texel = [](const glm::mat4& m, glm::vec3 x) {
+        glm::vec4 c = m * glm::vec4(x, 1.0f);
+        return (glm::vec2(c) / c.w * 0.5f + 0.5f) * 64.0f - 0.5f;
+    };
+    const glm::vec2 expected = texel(before, s.centre) - texel(now, s.centre);
+    EXPECT_NEAR(g.linearDepth, 2.0f, 1e-5f);      // clip w = distance along the optical axis
+    EXPECT_NEAR(g.previousDepth, 2.0f, 1e-5f);
+    EXPECT_NEAR(g.motion.x, expected.x, 1e-4f);
+    EXPECT_NEAR(g.motion.y, 0.0f, 1e-4f);
+    EXPECT_GT(g.motion.x, 1.0f);                  // the point sat further right before the camera moved right
+    EXPECT_EQ(g.objectId, 7u);
+    EXPECT_EQ(g.normal, s.normal);
+}
+
+TEST(SecondTypeGuideBody, AReceiverBehindLastFramesCameraHasNoHistory) {
+    GuideSphere s{};
+    s.centre = float3(0.0f, 0.0f, 0.0f);
+    const glm::mat4 now = viewProjAt(0.0f);
+    const glm::mat4 turned = glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f) *
+                             glm::lookAt(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    SecondTypeGuide g = secondTypeGuide(guideCamera(now, turned), s, float2(64.0f, 64.0f));
+    EXPECT_EQ(g.previousDepth, 0.0f);
+    EXPECT_EQ(g.motion.x, kGuideNoHistory);
+}
+
+// A reflection can reach a receiver behind the camera: the filter divides by the guide depth.
+TEST(SecondTypeGuideBody, AReceiverBehindTheCameraGetsAPositiveDepthAndNoHistory) {
+    GuideSphere s{};
+    s.centre = float3(0.0f, 0.0f, 3.0f);   // behind the camera at z = 2 looking towards -z
+    const glm::mat4 now = viewProjAt(0.0f);
+    SecondTypeGuide g = secondTypeGuide(guideCamera(now, now), s, float2(64.0f, 64.0f));
+    EXPECT_NEAR(g.linearDepth, 1.0f, 1e-5f);
+    EXPECT_EQ(g.previousDepth, 0.0f);
 }
 
 }  // namespace

@@ -1,0 +1,19 @@
+#pragma once
+// The second-type guide pass's shader resources, declared once (docs/shaders.md, "Bindings").
+#include "bindings/shader_binding.h"
+
+namespace caustics::shader_bindings {
+
+inline constexpr Binding kSecondTypeGuidesBindingList[] = {
+    {"camera", Kind::ConstantBuffer, 0, 0, "GuideCamera"},                       // caustics.camera
+    {"spheres", Kind::StorageBufferRO, 0, 1, "GuideSphere", ImageFormat::None, 64},   // caustics.spheres
+    {"counters", Kind::StorageBufferRO, 0, 2, "uint"},                           // caustics.stats
+    {"depthMotion", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba32f},
+    {"normal", Kind::StorageTexture, 0, 4, "float4", ImageFormat::Rgba16f},
+    {"objectId", Kind::StorageTexture, 0, 5, "uint", ImageFormat::R32ui},
+};
+
+inline constexpr PassBindings kSecondTypeGuidesBindings{"second_type_guides", "passes/backward_trace/second_type_guides_bindings.h",
+                                                        kSecondTypeGuidesBindingList, "SecondTypeGuideParams", "params"};
+
+}  // namespace caustics::shader_bindings

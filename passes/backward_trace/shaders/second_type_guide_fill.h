@@ -1,0 +1,49 @@
+#ifndef CAUSTICS_PASS_SECOND_TYPE_GUIDE_FILL_H
+#define CAUSTICS_PASS_SECOND_TYPE_GUIDE_FILL_H
+// Fills the second type's guides where this frame's backward sample made no sphere (it was reflected
+// away, with probability R, or left the scene), in the shared dialect (docs/shaders.md; docs/caustics.md
+// "Second-type guides"). Such a pixel's second type is a legitimate zero of the estimate, but with
+// guide id 0 the filter could not average it with its neighbours and it would stay a hole. It takes the
+// guides of the first of its 8 neighbours (fixed order: deterministic) that has a sphere and shows the
+// same object in the camera G-buffer (the same glass). Entries: second_type_guide_fill.comp, .hlsl.
+#include "common/resources.h"
+
+CAUSTICS_SHARED_BEGIN
+// Push constants (second_type_guide_fill_bindings.h), 8 bytes.
+struct SecondTypeGuideFillParams {
+    uint2 size;
+};
+
+// The k-th neighbour (k < 8): the four edge neighbours first, then the diagonals.
+CAUSTICS_FN int2 guideFillNeighbour(uint k) {
+    int sign = (k & 1u) == 0u ? 1 : -1;
+    if (k < 2u) return int2(sign, 0);
+    if (k < 4u) return int2(0, sign);
+    return int2(sign, k < 6u ? 1 : -1);
+}
+CAUSTICS_SHARED_END
+
+#if !defined(CAUSTICS_LANG_CPP)
+#include "bindings/second_type_guide_fill.h"   // generated from passes/backward_trace/second_type_guide_fill_bindings.h
+
+void secondTypeGuideFillThread(uint2 id) {
+    if (id.x >= params.size.x || id.y >= params.size.y) return;
+    int2 p = int2(id);
+    int2 source = p;
+    uint surface = CAUSTICS_TEXEL_UINT(cameraObjectId, p);
+    if (CAUSTICS_TEXEL_UINT(sphereObjectId, p) == 0u && surface != 0u) {
+        for (uint k = 0u; k < 8u; ++k) {
+            int2 q = p + guideFillNeighbour(k);
+            if (q.x < 0 || q.y < 0 || q.x >= int(params.size.x) || q.y >= int(params.size.y)) continue;
+            if (CAUSTICS_TEXEL_UINT(sphereObjectId, q) == 0u || CAUSTICS_TEXEL_UINT(cameraObjectId, q) != surface) continue;
+            source = q;
+            break;
+        }
+    }
+    CAUSTICS_IMAGE_STORE(depthMotion, p, CAUSTICS_TEXEL(sphereDepthMotion, source));
+    CAUSTICS_IMAGE_STORE(normal, p, CAUSTICS_TEXEL(sphereNormal, source));
+    CAUSTICS_IMAGE_STORE_UINT(objectId, p, CAUSTICS_TEXEL_UINT(sphereObjectId, source));
+}
+#endif
+
+#endif  // CAUSTICS_PASS_SECOND_TYPE_GUIDE_FILL_H

@@ -1,0 +1,26 @@
+#ifndef CAUSTICS_PASS_COMBINE_TYPES_H
+#define CAUSTICS_PASS_COMBINE_TYPES_H
+// caustics.radiance = the first type filtered on the camera G-buffer + the second type filtered on its
+// own guides (docs/caustics.md "Second-type guides"), in the shared dialect (docs/shaders.md).
+// Entries: combine_types.comp, combine_types.hlsl.
+#include "common/resources.h"
+
+CAUSTICS_SHARED_BEGIN
+// Push constants (combine_types_bindings.h), 8 bytes.
+struct CombineTypesParams {
+    uint2 size;
+};
+CAUSTICS_SHARED_END
+
+#if !defined(CAUSTICS_LANG_CPP)
+#include "bindings/combine_types.h"   // generated from passes/caustic_filter/combine_types_bindings.h
+
+void combineTypesThread(uint2 id) {
+    if (id.x >= params.size.x || id.y >= params.size.y) return;
+    int2 p = int2(id);
+    float3 sum = CAUSTICS_TEXEL(firstType, p).rgb + CAUSTICS_TEXEL(secondType, p).rgb;
+    CAUSTICS_IMAGE_STORE(radiance, p, float4(sum, 1.0f));
+}
+#endif
+
+#endif  // CAUSTICS_PASS_COMBINE_TYPES_H
