@@ -23,7 +23,7 @@ constexpr uint32_t kFrames = 4;
 // The counts docs/embedding.md states, per call.
 constexpr int kGpuSceneCreateSubmits = 1;      // geometry, textures and BLAS builds in one submission
 constexpr int kModuleCreateSubmits = 1;        // caustics off: direct lighting's shader table
-constexpr int kCausticsSwitchOnSubmits = 4;    // setSettings(causticsEnabled): forward, backward, gather tables; sphere BLAS
+constexpr int kCausticsSwitchOnSubmits = 3;    // setSettings(causticsEnabled): forward, backward, gather tables (the sphere BLAS is built per frame)
 
 int submits() { return procAddrLog().queueSubmitCalls; }
 

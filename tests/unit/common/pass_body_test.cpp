@@ -235,6 +235,8 @@ TEST(DirectLightBody, PunctualLightsFallOffWithTheSquareOfTheDistanceInsideTheir
 TEST(GBufferBody, NormalIsUnitAndFacesTheViewerWhateverTheWinding) {
     EXPECT_EQ(gbufferFacingNormal(float3(0.0f, 0.0f, -2.0f), float3(0.0f, 0.0f, 1.0f)), float3(0.0f, 0.0f, 1.0f));
     EXPECT_EQ(gbufferFacingNormal(float3(0.0f, 3.0f, 0.0f), float3(0.0f, 1.0f, 1.0f)), float3(0.0f, 1.0f, 0.0f));
+}
+
 // A camera 2 m up looking down -z's way at the origin; `shift` moves it along x.
 glm::mat4 viewProjAt(float shift) {
     return glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f) *

@@ -1,0 +1,3 @@
+// The last a-trous iteration: pool to caustics.radiance (atrous_body.hlsli).
+#define kAtrousLast 1
+#include "caustic_filter/atrous_body.hlsli"
