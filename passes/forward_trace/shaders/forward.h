@@ -111,31 +111,7 @@ CAUSTICS_SHARED_END
 // layer plan's emitted counter (a member of a struct element, so no generated accessor).
 #include "common/resources.h"
 
-// traceScene(origin, tMin, dir, tMax): the scene TLAS traced opaque with hit group 0 and miss 0
-// (trace.rchit, trace.rmiss), their TracePayload returned (t < 0: miss).
-#if defined(CAUSTICS_LANG_GLSL)
-layout(location = 0) rayPayloadEXT TracePayload scenePayload;
-TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
-    scenePayload.t = -1.0f;
-    traceRayEXT(sceneTlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 0, 0, origin, tMin, dir, tMax, 0);
-    return scenePayload;
-}
-#elif defined(CAUSTICS_LANG_HLSL)
-TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
-    TracePayload payload;
-    payload.barycentrics = (float2)0.0f;
-    payload.instance = 0u;
-    payload.primitive = 0u;
-    payload.t = -1.0f;
-    RayDesc ray;
-    ray.Origin = origin;
-    ray.TMin = tMin;
-    ray.Direction = dir;
-    ray.TMax = tMax;
-    TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 0, 0, ray, payload);
-    return payload;
-}
-#endif
+#include "common/scene_trace.h"
 
 // The radiance atomics: one file per API under the same name (shaders/vulkan|d3d12/forward_trace/).
 #define RADIANCE_DECLARED

@@ -12,6 +12,7 @@
 #include "forward_trace/caustic_hit.hlsli"
 #include "backward_trace/surface_derivatives.hlsli"
 #include "backward_trace/sphere_list.hlsli"
+#include "common/scene_trace.h"
 
 struct CameraBlock { CameraConstants camera; };
 ConstantBuffer<CameraBlock> cameraBlock : register(b0, space1);
@@ -49,21 +50,6 @@ void writeSphereAabb(uint slot, float3 c, float r) {
     uint o = 24u * slot;
     sphereAabbs.Store3(o, asuint(c - r));
     sphereAabbs.Store3(o + 12u, asuint(c + r));
-}
-
-TracePayload traceScene(float3 origin, float tMin, float3 dir, float tMax) {
-    TracePayload payload;
-    payload.barycentrics = (float2)0.0f;
-    payload.instance = 0u;
-    payload.primitive = 0u;
-    payload.t = -1.0f;
-    RayDesc ray;
-    ray.Origin = origin;
-    ray.TMin = tMin;
-    ray.Direction = dir;
-    ray.TMax = tMax;
-    TraceRay(sceneTlas, RAY_FLAG_FORCE_OPAQUE, 0xFF, 0, 0, 0, ray, payload);
-    return payload;
 }
 
 // Shrinks `radius` so the disk at x (receiver normal n facing the camera path) stays on this side of
