@@ -11,15 +11,15 @@
 namespace caustics {
 
 struct CausticFilterPipelines {
-    rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout,
-        atrousWeightsLayout, atrousLayout, outputLayout, combineLayout;
+    rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout, atrousWeightsLayout, atrousLayout,
+        atrousLastLayout, outputLayout, combineLayout;
     rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousWeights, atrous, atrousLast, output;
     rhi::ComputePipelineHandle combine;   // first + second type, each filtered on its own guides
 
     static Result<CausticFilterPipelines> create(rhi::IDevice& device);
 };
 
-// The filter's pool (shaders/vulkan/caustic_filter/filter_common.glsl, "pool"): 8x8 tiles, one per
+// The filter's pool (passes/caustic_filter/shaders/filter_common.h): 8x8 tiles, one per
 // listed tile, kFilterPoolTilesPerRow to a row of the pool images. A view starts with a quarter of its
 // screen tiles, at least kFilterMinPoolTiles (rounded up to whole rows, at most all of them) and grows, from the tile counts its frames read back, to
 // 1.25 x the tiles a frame wanted (a frame that wants more than the pool holds filters the rest of them

@@ -6,17 +6,27 @@
 //   caustics.filterTiles  the view's tile state, the tile list and slot map (filter_tile_passes.cpp)
 //   caustics.temporal   reprojected history, disocclusion tests, 1/n average up to the history cap; writes
 //                       this frame's copy of the ping-ponged history (the result, unfiltered, its
-//                       luminance deviation, the guides) and the depth gradient the a-trous passes use
+//                       luminance deviation, the guides) and the a-trous guide, packed once per frame
 //   caustics.variance   luminance variance: temporal moments, or photon shot noise for short histories
-//   caustics.atrous.N   edge-aware a-trous iterations stopping at depth, normal, object and luminance:
-//                       .weights (each source's weight sum), then the spreading (energy-preserving)
+//   caustics.atrous.N   edge-aware a-trous iterations stopping at depth, normal, object and luminance,
+//                       energy-preserving, one pass each (the weight sums in shared memory)
 //   caustics.filterOutput  (atrousIterations 0 only) the temporal result into caustics.radiance
 // The last pass writes into caustics.radiance, over the listed tiles (the others hold this frame's zeros).
 // With settings.filter off the combined radiance is returned unfiltered.
 #include <string>
 
-#include "caustic_filter/combine_types_bindings.h"
+#include "caustic_filter/atrous_bindings.h"
 #include "caustic_filter/filter_graph.h"
+#include "caustic_filter/shaders/atrous.h"
+#include "caustic_filter/output_bindings.h"
+#include "caustic_filter/resolve_bindings.h"
+#include "caustic_filter/shaders/output.h"
+#include "caustic_filter/shaders/resolve.h"
+#include "caustic_filter/shaders/temporal.h"
+#include "caustic_filter/temporal_bindings.h"
+#include "caustic_filter/shaders/variance.h"
+#include "caustic_filter/variance_bindings.h"
+#include "caustic_filter/combine_types_bindings.h"
 #include "caustic_filter/shaders/combine_types.h"
 #include "caustics/rhi/log.h"
 #include "module/pass_bindings.h"
@@ -25,9 +35,6 @@ namespace caustics {
 namespace {
 
 using namespace filter;
-
-// Resolve push flag (shaders/*/caustic_filter/resolve.*): one buffer holds both types, write only the sum.
-constexpr uint32_t kResolveCombinedOnly = 2u;
 
 void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
     const uint32_t w = f.width, h = f.height;
@@ -45,15 +52,22 @@ void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
         out.radiance = b.write(b.createTexture("caustics.radiance", screenImageDesc(w, h, "caustics.radiance")));
         CausticFrame fr = f;
         CausticOutputs o = out;
-        struct { uint32_t width, height, flags; float invScale; } push{
-            w, h, (f.res->floatAtomics ? 0u : 1u) | (separate ? 0u : kResolveCombinedOnly) | (f.wideFixedPoint ? 4u : 0u),
+        const shader::ResolveParams push{
+            w, h,
+            (f.res->floatAtomics ? 0u : shader::kResolveFixedPoint) | (separate ? 0u : shader::kResolveCombinedOnly) |
+                (f.wideFixedPoint ? shader::kResolveWide : 0u),
             1.0f / f.fixedPointScale};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = separate ? textureBindings(ctx, 2, {}, {o.firstType, o.secondType, o.radiance})
-                                             : textureBindings(ctx, 2, {}, {o.radiance, o.radiance, o.radiance});
-            d.add(rhi::BindingSetItem::storageBuffer(0, ctx.buffer(fr.radiance1), false))
-                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(separate ? fr.radiance2 : fr.radiance1), false));
-            dispatchImage(ctx, *fr.res, fr.res->filter.resolve, fr.res->filter.resolveLayout, d, push, w, h);
+            const rg::RgTexture first = separate ? o.firstType : o.radiance, second = separate ? o.secondType : o.radiance;
+            auto d = PassBindingSet(shader_bindings::kCausticResolveBindings, 0)
+                         .buffer("firstWords", ctx.buffer(fr.radiance1))
+                         .buffer("secondWords", ctx.buffer(separate ? fr.radiance2 : fr.radiance1))
+                         .texture("outFirst", ctx.texture(first))
+                         .texture("outSecond", ctx.texture(second))
+                         .texture("outCombined", ctx.texture(o.radiance))
+                         .desc();
+            if (!d) log(LogLevel::Error, "caustics.resolve: " + d.message());
+            else dispatchImage(ctx, *fr.res, fr.res->filter.resolve, fr.res->filter.resolveLayout, std::move(*d), push, w, h);
         };
     });
 }
@@ -61,59 +75,62 @@ void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
 // This frame's filter inputs that every pass after caustics.temporal reads.
 struct FilterFrame {
     FilterTiles tiles;
-    rg::RgTexture gradient;   // pool R32UI: half2 depth slope (caustics.temporal)
+    rg::RgTexture guide;   // pool RGBA32UI: the a-trous guide (caustics.temporal, filterPackAtrousGuide)
     uint32_t poolTiles = 0;
     float preExposure = 1.0f;
 };
 
 // Iteration i (step 2^i) on `radiance` (pool: rgb, a deviation), which it replaces with its result; the
-// last iteration writes into `output` (caustics.radiance) instead.
+// last iteration writes into `output` (caustics.radiance) instead. Two passes: the weight sums W_q, then
+// the shares w / W_q (passes/caustic_filter/shaders/atrous.h; docs/caustics.md "Cost").
 void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterFrame& ff, rg::RgTexture& radiance,
                         rg::RgTexture& output) {
-    const uint32_t w = f.width, h = f.height;
     const CausticsSettings& s = f.in->settings;
-    const GBuffer& g = f.in->gbuffer;
-    const std::string name = "caustics.atrous." + std::to_string(i);
-    const int32_t step = 1 << i;
     const bool last = i + 1 == s.atrousIterations;
-    rg::RgTexture sources;
+    const std::string name = "caustics.atrous." + std::to_string(i);
+    const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
+                                    1.0f / ff.preExposure};
+    rg::RgTexture sums;
     graph.addPass(name + ".weights", [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
-        const rg::RgTexture in[] = {b.read(radiance), b.read(g.linearDepth), b.read(g.normalRoughness),
-                                    b.read(g.objectId), b.read(ff.gradient)};
+        const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide);
         readTiles(b, ff.tiles, true);
-        sources = b.write(b.createTexture(name + ".weights", poolImageDesc(ff.poolTiles, rhi::Format::R32_FLOAT,
-                                                                           "caustics.atrousWeights")));
+        sums = b.write(b.createTexture(name + ".weights", poolImageDesc(ff.poolTiles, rhi::Format::R32_FLOAT, "caustics.atrousWeights")));
         CausticFrame fr = f;
-        rg::RgTexture o = sources;
+        rg::RgTexture o = sums;
         FilterTiles t = ff.tiles;
-        struct { int32_t stepWidth, width, height; float sigmaLuminance; } push{step, int32_t(w), int32_t(h),
-                                                                               s.filterLuminanceSigma};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1], in[2], in[3], in[4], t.slots}, {});
-            d.add(rhi::BindingSetItem::storageBuffer(6, ctx.buffer(t.list), false))
-                .add(rhi::BindingSetItem::storageTexture(7, ctx.texture(o)));
-            dispatchTiles(ctx, *fr.res, fr.res->filter.atrousWeights, fr.res->filter.atrousWeightsLayout, d, push, t.args);
+            dispatchDeclared(ctx, *fr.res, fr.res->filter.atrousWeights, fr.res->filter.atrousWeightsLayout,
+                             PassBindingSet(shader_bindings::kCausticAtrousWeightsBindings, 0)
+                                 .texture("inColor", ctx.texture(in))
+                                 .texture("guides", ctx.texture(guide))
+                                 .texture("slotMap", ctx.texture(t.slots))
+                                 .buffer("tiles", ctx.buffer(t.list))
+                                 .texture("outSums", ctx.texture(o)),
+                             push, t.args);
         };
     });
     graph.addPass(name, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
-        const rg::RgTexture in[] = {b.read(radiance), b.read(sources), b.read(g.linearDepth), b.read(g.normalRoughness),
-                                    b.read(g.objectId), b.read(ff.gradient)};
+        const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide), w = b.read(sums);
         readTiles(b, ff.tiles, true);
         if (last) radiance = output = b.write(output);
         else radiance = b.write(b.createTexture(name, poolImageDesc(ff.poolTiles, rhi::Format::RGBA16_FLOAT, "caustics.atrous")));
         CausticFrame fr = f;
         rg::RgTexture o = radiance;
         FilterTiles t = ff.tiles;
-        struct { int32_t stepWidth, width, height; float sigmaLuminance, invPreExposure; } push{
-            step, int32_t(w), int32_t(h), s.filterLuminanceSigma, 1.0f / ff.preExposure};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1], in[2], in[3], in[4], in[5], t.slots}, {});
-            d.add(rhi::BindingSetItem::storageBuffer(7, ctx.buffer(t.list), false))
-                .add(rhi::BindingSetItem::storageTexture(8, ctx.texture(o)));
-            dispatchTiles(ctx, *fr.res, last ? fr.res->filter.atrousLast : fr.res->filter.atrous,
-                          fr.res->filter.atrousLayout, d, push, t.args);
+            const auto& declared = last ? shader_bindings::kCausticAtrousLastBindings : shader_bindings::kCausticAtrousBindings;
+            dispatchDeclared(ctx, *fr.res, last ? fr.res->filter.atrousLast : fr.res->filter.atrous,
+                             last ? fr.res->filter.atrousLastLayout : fr.res->filter.atrousLayout,
+                             PassBindingSet(declared, 0)
+                                 .texture("inColor", ctx.texture(in))
+                                 .texture("guides", ctx.texture(guide))
+                                 .texture("slotMap", ctx.texture(t.slots))
+                                 .buffer("tiles", ctx.buffer(t.list))
+                                 .texture("sums", ctx.texture(w))
+                                 .texture("outColor", ctx.texture(o)),
+                             push, t.args);
         };
     });
 }
@@ -132,28 +149,37 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         readTiles(b, ff.tiles, false);
         hist.color = b.write(hist.color);
         hist.guides = b.write(hist.guides);
-        ff.gradient = b.write(b.createTexture("caustics.filterGradient", poolImageDesc(ff.poolTiles, rhi::Format::R32_UINT,
-                                                                                       "caustics.filterGradient")));
+        ff.guide = b.write(b.createTexture("caustics.filterGuide", poolImageDesc(ff.poolTiles, rhi::Format::RGBA32_UINT,
+                                                                                 "caustics.filterGuide")));
         CausticFrame fr = f;
         HistoryHandles o = hist;
         FilterTiles t = ff.tiles;
-        rg::RgTexture gradient = ff.gradient;
+        rg::RgTexture guide = ff.guide;
         const float pre = ff.preExposure;
-        struct { uint32_t historyValid; float maxHistory, preExposure, historyScale; uint32_t motionGuides; } built{
-            historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f, motionGuides ? 1u : 0u};
+        const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f,
+                                             motionGuides ? 1u : 0u};
         return [=](rg::PassContext& ctx) {
             // Only if the last EXECUTED frame wrote the copy this one reads (a dropped graph breaks it),
             // with the pre-exposure that frame stored it with.
             auto push = built;
             push.historyValid &= (fr.history->valid && fr.history->parity == readCopy) ? 1u : 0u;
             push.historyScale = pre / fr.history->preExposure[readCopy];
-            rhi::BindingSetDesc d = textureBindings(ctx, 1, {in[0], in[1], in[2], in[3], in[4], in[5], in[6]}, {});
-            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(fr.camera)))
-                .add(rhi::BindingSetItem::storageBuffer(8, ctx.buffer(t.list), false))
-                .add(rhi::BindingSetItem::storageTexture(9, ctx.texture(o.color)))
-                .add(rhi::BindingSetItem::storageTexture(10, ctx.texture(o.guides)))
-                .add(rhi::BindingSetItem::storageTexture(11, ctx.texture(gradient)));
-            if (dispatchTiles(ctx, *fr.res, fr.res->filter.temporal, fr.res->filter.temporalLayout, d, push, t.args)) {
+            const bool recorded = dispatchDeclared(ctx, *fr.res, fr.res->filter.temporal, fr.res->filter.temporalLayout,
+                                                   PassBindingSet(shader_bindings::kCausticTemporalBindings, 0)
+                                                       .buffer("camera", ctx.buffer(fr.camera))
+                                                       .texture("current", ctx.texture(in[0]))
+                                                       .texture("gLinearDepth", ctx.texture(in[1]))
+                                                       .texture("gNormal", ctx.texture(in[2]))
+                                                       .texture("gObjectId", ctx.texture(in[3]))
+                                                       .texture("historyColor", ctx.texture(in[4]))
+                                                       .texture("historyGuides", ctx.texture(in[5]))
+                                                       .texture("previousSlots", ctx.texture(in[6]))
+                                                       .buffer("tiles", ctx.buffer(t.list))
+                                                       .texture("outColor", ctx.texture(o.color))
+                                                       .texture("outGuides", ctx.texture(o.guides))
+                                                       .texture("outFilterGuide", ctx.texture(guide)),
+                                                   push, t.args);
+            if (recorded) {
                 // Committed when recorded, not when the graph was built: this frame's copy is the next
                 // frame's previous one.
                 fr.history->valid = true;
@@ -208,12 +234,15 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
             CausticFrame fr = f;
             rg::RgTexture o = raw;
             FilterTiles t = ff.tiles;
-            struct { int32_t width, height; float invPreExposure; } push{int32_t(w), int32_t(h), 1.0f / ff.preExposure};
+            const shader::FilterOutputParams push{int32_t(w), int32_t(h), 1.0f / ff.preExposure};
             return [=](rg::PassContext& ctx) {
-                rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1]}, {});
-                d.add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(t.list), false))
-                    .add(rhi::BindingSetItem::storageTexture(3, ctx.texture(o)));
-                dispatchTiles(ctx, *fr.res, fr.res->filter.output, fr.res->filter.outputLayout, d, push, t.args);
+                dispatchDeclared(ctx, *fr.res, fr.res->filter.output, fr.res->filter.outputLayout,
+                                 PassBindingSet(shader_bindings::kCausticFilterOutputBindings, 0)
+                                     .texture("temporalColor", ctx.texture(in[0]))
+                                     .texture("temporalGuides", ctx.texture(in[1]))
+                                     .buffer("tiles", ctx.buffer(t.list))
+                                     .texture("radiance", ctx.texture(o)),
+                                 push, t.args);
             };
         });
         return ff.tiles.args;
@@ -228,12 +257,18 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         CausticFrame fr = f;
         rg::RgTexture o = radiance;
         FilterTiles t = ff.tiles;
-        struct { int32_t width, height; float preExposure; } push{int32_t(w), int32_t(h), ff.preExposure};
+        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 0, {in[0], in[1], in[2], in[3]}, {o});
-            d.add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(t.list), false))
-                .add(rhi::BindingSetItem::sampledTexture(6, ctx.texture(t.slots)));
-            dispatchTiles(ctx, *fr.res, fr.res->filter.variance, fr.res->filter.varianceLayout, d, push, t.args);
+            dispatchDeclared(ctx, *fr.res, fr.res->filter.variance, fr.res->filter.varianceLayout,
+                             PassBindingSet(shader_bindings::kCausticVarianceBindings, 0)
+                                 .texture("current", ctx.texture(in[0]))
+                                 .texture("temporalColor", ctx.texture(in[1]))
+                                 .texture("temporalGuides", ctx.texture(in[2]))
+                                 .texture("gObjectId", ctx.texture(in[3]))
+                                 .texture("slotMap", ctx.texture(t.slots))
+                                 .buffer("tiles", ctx.buffer(t.list))
+                                 .texture("outColor", ctx.texture(o)),
+                             push, t.args);
         };
     });
 
@@ -244,7 +279,6 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
 // caustics.filterCombine: caustics.radiance = both types, each filtered on its own guides.
 void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
     graph.addPass("caustics.filterCombine", [&](rg::PassBuilder& b) {
-        b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture first = b.read(out.firstType), second = b.read(out.secondType);
         out.radiance = b.write(out.radiance);
         CausticFrame fr = f;

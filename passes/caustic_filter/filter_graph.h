@@ -1,11 +1,12 @@
 #pragma once
 // Graph helpers shared by the caustic filter's passes (caustic_filter_pass.cpp, filter_tile_passes.cpp;
 // docs/caustics.md "Filter", "Tiles", "Memory").
-#include <initializer_list>
 #include <utility>
 
 #include "caustic_filter/caustic_filter.h"
 #include "caustic_maps/caustic_internal.h"
+#include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics::filter {
 
@@ -20,16 +21,6 @@ inline rhi::TextureDesc screenImageDesc(uint32_t w, uint32_t h, const char* name
 inline rhi::TextureDesc poolImageDesc(uint32_t poolTiles, rhi::Format format, const char* name) {
     return rhi::TextureDesc().setSize(filterPoolWidth(), filterPoolHeight(poolTiles)).setFormat(format)
         .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage).setDebugName(name);
-}
-
-// Sampled textures at slots first, first + 1, ..., then the storage images after them.
-inline rhi::BindingSetDesc textureBindings(rg::PassContext& ctx, uint32_t first, std::initializer_list<rg::RgTexture> sampled,
-                                           std::initializer_list<rg::RgTexture> storage) {
-    rhi::BindingSetDesc d;
-    uint32_t slot = first;
-    for (rg::RgTexture t : sampled) d.add(rhi::BindingSetItem::sampledTexture(slot++, ctx.texture(t)));
-    for (rg::RgTexture t : storage) d.add(rhi::BindingSetItem::storageTexture(slot++, ctx.texture(t)));
-    return d;
 }
 
 // Binds a filter pipeline with its set and push constants; false (nothing bound) when the set failed.
@@ -64,6 +55,20 @@ bool dispatchTiles(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::C
     return true;
 }
 
+// dispatchTiles with a set filled by name from the pass's one declaration (docs/shaders.md, "Bindings");
+// a name or kind that does not match it is logged and nothing is dispatched.
+template <typename Push>
+bool dispatchDeclared(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::ComputePipelineHandle& pipeline,
+                      const rhi::BindingLayoutHandle& layout, const PassBindingSet& bindings, const Push& push,
+                      rg::RgBuffer args) {
+    auto desc = bindings.desc();
+    if (!desc) {
+        log(LogLevel::Error, "caustic filter: " + desc.message());
+        return false;
+    }
+    return dispatchTiles(ctx, r, pipeline, layout, std::move(*desc), push, args);
+}
+
 // The view's ping-ponged history (caustic_passes.h): last frame's (read) and this frame's (written).
 struct HistoryHandles {
     rg::RgTexture previousColor, previousGuides, previousTiles, previousSlots;
@@ -71,7 +76,7 @@ struct HistoryHandles {
 };
 HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& history);
 
-// The filter's tile list (tile_list.comp): `args` (listed tiles with a pool tile, 1, 1, tiles wanted)
+// The filter's tile list (caustics.filterTiles.list, shaders/tiles.h): `args` (listed tiles with a pool tile, 1, 1, tiles wanted)
 // for the indirect dispatches, `list` the packed tiles (list index = pool tile), `slots` this frame's
 // slot map.
 struct FilterTiles {

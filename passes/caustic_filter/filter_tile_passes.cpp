@@ -5,6 +5,8 @@
 #include <string>
 
 #include "caustic_filter/filter_graph.h"
+#include "caustic_filter/shaders/tiles.h"
+#include "caustic_filter/tiles_bindings.h"
 
 namespace caustics::filter {
 
@@ -30,8 +32,8 @@ HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& h
             import("caustics.historySlots", history.slots, next)};
 }
 
-// caustics.filterTiles: this frame's tile state (tiles.comp), then caustics.filterTiles.list clears the
-// arguments to (0, 1, 1, 0), lists the tiles and gives each a pool tile (tile_list.comp). Nothing after
+// caustics.filterTiles: this frame's tile state (shaders/tiles.h), then caustics.filterTiles.clear sets the
+// arguments to (0, 1, 1, 0) and caustics.filterTiles.list lists the tiles and gives each a pool tile. Nothing after
 // it runs on an unlisted tile.
 FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, rg::RgTexture raw,
                           bool historyUsable) {
@@ -46,11 +48,18 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
         hist.tiles = b.write(hist.tiles);
         CausticFrame fr = f;
         rg::RgTexture o = hist.tiles;
-        struct { uint32_t historyValid, keepFrames; } push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory};
+        const shader::FilterTilesParams push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d = textureBindings(ctx, 1, {in[0], in[1], in[2], in[3]}, {o});
-            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(fr.camera)));
-            if (bindFilter(ctx, *fr.res, fr.res->filter.tiles, fr.res->filter.tilesLayout, d, push))
+            auto d = PassBindingSet(shader_bindings::kCausticFilterTilesBindings, 0)
+                         .buffer("camera", ctx.buffer(fr.camera))
+                         .texture("current", ctx.texture(in[0]))
+                         .texture("gLinearDepth", ctx.texture(in[1]))
+                         .texture("gObjectId", ctx.texture(in[2]))
+                         .texture("previousTiles", ctx.texture(in[3]))
+                         .texture("tileState", ctx.texture(o))
+                         .desc();
+            if (!d) log(LogLevel::Error, "caustics.filterTiles: " + d.message());
+            else if (bindFilter(ctx, *fr.res, fr.res->filter.tiles, fr.res->filter.tilesLayout, std::move(*d), push))
                 ctx.cmd().dispatch(tilesX, tilesY);   // one group per tile
         };
     });
@@ -80,14 +89,16 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
         CausticFrame fr = f;
         FilterTiles o = t;
         rg::RgTexture state = hist.tiles;
-        struct { int32_t tilesX, tilesY; uint32_t capacity; } push{int32_t(tilesX), int32_t(tilesY), capacity};
+        const shader::TileListParams push{int32_t(tilesX), int32_t(tilesY), capacity};
         return [=](rg::PassContext& ctx) {
-            rhi::BindingSetDesc d;
-            d.add(rhi::BindingSetItem::storageTexture(0, ctx.texture(state)))
-                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(o.args)))
-                .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(o.list)))
-                .add(rhi::BindingSetItem::storageTexture(3, ctx.texture(o.slots)));
-            dispatchImage(ctx, *fr.res, fr.res->filter.tileList, fr.res->filter.tileListLayout, d, push, tilesX, tilesY);
+            auto d = PassBindingSet(shader_bindings::kCausticTileListBindings, 0)
+                         .texture("tileState", ctx.texture(state))
+                         .buffer("tileArgs", ctx.buffer(o.args))
+                         .buffer("tiles", ctx.buffer(o.list))
+                         .texture("slotMap", ctx.texture(o.slots))
+                         .desc();
+            if (!d) log(LogLevel::Error, "caustics.filterTiles.list: " + d.message());
+            else dispatchImage(ctx, *fr.res, fr.res->filter.tileList, fr.res->filter.tileListLayout, std::move(*d), push, tilesX, tilesY);
         };
     });
     graph.addPass("caustics.filterTiles.count", [&](rg::PassBuilder& b) {

@@ -7,6 +7,12 @@
 #include "caustic_maps/emitters_bindings.h"
 #include "caustic_maps/grid_from_count_bindings.h"
 #include "caustic_maps/photon_plan_bindings.h"
+#include "caustic_filter/atrous_bindings.h"
+#include "caustic_filter/output_bindings.h"
+#include "caustic_filter/resolve_bindings.h"
+#include "caustic_filter/temporal_bindings.h"
+#include "caustic_filter/tiles_bindings.h"
+#include "caustic_filter/variance_bindings.h"
 #include "direct_lighting/direct_lighting_bindings.h"
 #include "forward_trace/forward_bindings.h"
 #include "gbuffer/gbuffer_bindings.h"
@@ -18,6 +24,9 @@
 namespace caustics::shader_bindings {
 
 inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
+                                                     &kCausticAtrousWeightsBindings, &kCausticAtrousBindings, &kCausticAtrousLastBindings, &kCausticVarianceBindings,
+                                                     &kCausticFilterOutputBindings, &kCausticResolveBindings,
+                                                     &kCausticFilterTilesBindings, &kCausticTileListBindings, &kCausticTemporalBindings,
                                                      &kForwardBindings, &kForwardFixedBindings, &kForwardFixed64Bindings,
                                                      &kEmittersBindings, &kCausticMapBindings,
                                                      &kDirectLightingBindings, &kGBufferBindings,

@@ -101,7 +101,7 @@ static_assert(sizeof(CausticSphere) == 64);
 // the pool grown from the tile counts the view's frames read back.
 struct CausticViewHistory {
     rhi::TextureHandle color[2];    // pool RGBA16F: rgb mean x preExposure, a per-frame luminance deviation
-    rhi::TextureHandle guides[2];   // pool RG32UI: half depth and n, normal, object id (filter_common.glsl)
+    rhi::TextureHandle guides[2];   // pool RG32UI: half depth and n, normal, object id (caustic_filter/shaders/temporal_thread.h)
     // R32UI per 8x8 pixel tile (docs/caustics.md "Filter", "Tiles"): how many more frames the tile's
     // history is kept, and the tile's pool tile (~0u: none, its history is gone).
     rhi::TextureHandle tiles[2];

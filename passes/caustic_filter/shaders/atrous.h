@@ -1,0 +1,77 @@
+#ifndef CAUSTICS_PASS_CAUSTIC_ATROUS_H
+#define CAUSTICS_PASS_CAUSTIC_ATROUS_H
+// caustics.atrous.N in the shared dialect (docs/shaders.md): one edge-aware a-trous iteration of step
+// 2^N (Dammertz et al. 2010 with SVGF's edge-stopping weights, Schied et al. 2017), energy-preserving:
+// every source q hands each receiver p of its 5x5 holed neighbourhood the share w(q -> p) / W_q of its
+// radiance, W_q = sum_p w(q -> p), so a source's shares add up to 1 (docs/caustics.md "Filter",
+// "Spatial"). Two passes per iteration over the tile list (docs/caustics.md "Cost"):
+//   caustics.atrous.N.weights   W_q of every pixel of the tile (atrous_weights.comp / .hlsl)
+//   caustics.atrous.N           the shares (atrous.comp / .hlsl into the pool; atrous_last.comp / .hlsl,
+//                               kAtrousLast, into caustics.radiance in radiance units)
+// Up to step kAtrousSharedMaxStep a group first loads its tile and an apron of 2 steps (the region,
+// (8 + 4 s)^2 pixels) into shared memory, once per pixel, instead of 25 fetches of each texture per pixel:
+// the guide caustics.temporal packed once per frame, the colour and, for the shares, W. Larger steps
+// fetch each tap (their regions would not fit).
+#include "filter_common.h"
+
+CAUSTICS_SHARED_BEGIN
+// Push constants (atrous_bindings.h), 20 bytes.
+struct AtrousParams {
+    int stepWidth;
+    int width;
+    int height;
+    float sigmaLuminance;
+    float invPreExposure;   // the last iteration: pool units (pre-exposed) -> radiance
+};
+
+// The largest step whose region fits the shared arrays: (8 + 4 x 4)^2 = 576 pixels, 36 bytes each
+// (20.7 KB, under the 32 KB that D3D12 and lavapipe give a group).
+CAUSTICS_CONST int kAtrousSharedMaxStep = 4;
+CAUSTICS_CONST int kAtrousMaxRegionSide = 24;
+CAUSTICS_FN bool atrousUsesRegion(int stepWidth) { return stepWidth <= kAtrousSharedMaxStep; }
+// The region of a tile at step s: the tile and 2 s pixels around it (the taps of its pixels).
+CAUSTICS_FN int atrousApron(int stepWidth) { return 2 * stepWidth; }
+CAUSTICS_FN int atrousRegionSide(int stepWidth) { return kFilterTileSize + 2 * atrousApron(stepWidth); }
+// The tiles a region overlaps are the 3x3 around its own (an apron of at most 8 pixels = one tile):
+// index 0..8 of screen tile `tile` seen from the group's tile `own`.
+CAUSTICS_FN int atrousNeighbourTileIndex(int2 tile, int2 own) { return (tile.y - own.y + 1) * 3 + (tile.x - own.x + 1); }
+
+// B3-spline a-trous kernel taps for |offset| / step = 0, 1, 2 (1/16 (1 4 6 4 1)).
+CAUSTICS_FN float atrousKernelTap(int k) { return k == 0 ? 0.375f : (k == 1 ? 0.25f : 0.0625f); }
+
+// Weight with which source pixel q spreads its radiance to pixel p = q + offset (SVGF's edge-stopping
+// functions, Schied et al. 2017, eq. 3-5, with a Gaussian luminance term):
+//   w_z = exp(-|z_p - z_q - grad z_q . offset| / (|grad z_q . offset| + 0.002 z_q step))   (a plane passes)
+//   w_n = max(0, n_q . n_p)^128
+//   w_l = exp(-d^2 / 2),  d = |l_p - l_q| / (sigma_l sqrt(Var_q + Var_p))
+// times the B3 kernel; the caller checks the object id. The luminance term uses the variance of the
+// difference, so it is symmetric in p and q: no net flow between two pixels whose difference is noise.
+// Gaussian, not SVGF's exp(-d): one deviation keeps 0.61 of the weight, three keep 0.011, so a fold line
+// or a cusp stops the spreading (docs/caustics.md "Spatial"). Two reciprocals and one exponential per
+// weight (d^2 without its square root, w_n by squarings, w_z w_l in one exponential): the a-trous passes
+// evaluate it 50 times per pixel and iteration, and the GPU's special-function units are its bound.
+CAUSTICS_FN float atrousSpreadWeight(int2 offset, int stepWidth, float zq, float zp, float2 gradZq, float3 nq, float3 np,
+                                     float lq, float lp, float varianceQ, float varianceP, float sigmaLuminance) {
+    int2 k = abs(offset) / stepWidth;
+    float planar = dot(gradZq, float2(offset));
+    float depthTerm = abs(zp - zq - planar) / (abs(planar) + 0.002f * zq * float(stepWidth));
+    float difference = lp - lq;
+    // max(): two pixels of no variance and equal luminance keep the weight (0 / tiny), unequal ones lose it.
+    float d2 = difference * difference / max(sigmaLuminance * sigmaLuminance * (varianceQ + varianceP), 1e-30f);
+    float c = max(0.0f, dot(nq, np));
+    c *= c;   // ^2
+    c *= c;   // ^4
+    c *= c;   // ^8
+    c *= c;   // ^16
+    c *= c;   // ^32
+    c *= c;   // ^64
+    c *= c;   // ^128
+    return atrousKernelTap(k.x) * atrousKernelTap(k.y) * c * exp(-depthTerm - 0.5f * d2);
+}
+CAUSTICS_SHARED_END
+
+#if !defined(CAUSTICS_LANG_CPP)
+#include "atrous_thread.h"
+#endif
+
+#endif  // CAUSTICS_PASS_CAUSTIC_ATROUS_H

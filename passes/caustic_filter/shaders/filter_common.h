@@ -1,0 +1,63 @@
+#ifndef CAUSTICS_PASS_CAUSTIC_FILTER_COMMON_H
+#define CAUSTICS_PASS_CAUSTIC_FILTER_COMMON_H
+// What the caustic filter's shared-dialect bodies share (docs/shaders.md; docs/caustics.md "Filter",
+// "Tiles", "Memory"): the tiles, the pool, luminance; and, GLSL and HLSL only, the bit casts, the
+// rounding to half and the group-shared memory spellings.
+#include "common/lang.h"
+
+CAUSTICS_SHARED_BEGIN
+// The filter runs over 8x8 pixel tiles, one 8x8 group (64 threads) per listed tile (the list of
+// caustics.filterTiles.list, tiles.h), packed x | y << 16. Its per-pixel data lives in a pool of 8x8 tiles, kFilterPoolTilesPerRow to a row
+// (caustic_filter.h); the slot map names each screen tile's pool tile, kFilterNoSlot where none.
+CAUSTICS_CONST int kFilterTileSize = 8;
+CAUSTICS_CONST uint kFilterGroupThreads = 64u;
+CAUSTICS_CONST uint kFilterNoSlot = 0xFFFFFFFFu;
+CAUSTICS_CONST uint kFilterPoolTilesPerRow = 128u;
+
+CAUSTICS_FN int2 filterTileOf(uint packed) { return int2(int(packed & 0xFFFFu), int(packed >> 16)); }
+// The pool texel of screen pixel p (p >= 0) whose tile has pool tile `slot`.
+CAUSTICS_FN int2 filterPoolTexel(uint slot, int2 p) {
+    int2 local = p - (p / kFilterTileSize) * kFilterTileSize;
+    return int2(int(slot % kFilterPoolTilesPerRow), int(slot / kFilterPoolTilesPerRow)) * kFilterTileSize + local;
+}
+CAUSTICS_FN bool filterInside(int2 p, int width, int height) { return p.x >= 0 && p.y >= 0 && p.x < width && p.y < height; }
+
+// Rec. 709 luminance: the scalar whose moments and differences guide the filter (SVGF section 4.2).
+CAUSTICS_FN float filterLuminance(float3 c) { return dot(c, float3(0.2126f, 0.7152f, 0.0722f)); }
+CAUSTICS_SHARED_END
+
+#if !defined(CAUSTICS_LANG_CPP)
+#if defined(CAUSTICS_LANG_HLSL)
+#define FILTER_GROUPSHARED groupshared
+#define FILTER_BARRIER() GroupMemoryBarrierWithGroupSync()
+#define FILTER_ATOMIC_MIN(target, value) InterlockedMin(target, value)
+float2 filterUnpackHalf2(uint u) { return float2(f16tof32(u & 0xFFFFu), f16tof32(u >> 16)); }
+uint filterPackHalf2(float2 v) { return f32tof16(v.x) | (f32tof16(v.y) << 16); }
+float filterBitsToFloat(uint u) { return asfloat(u); }
+uint filterFloatToBits(float v) { return asuint(v); }
+#else
+#define FILTER_GROUPSHARED shared
+#define FILTER_BARRIER() barrier()
+#define FILTER_ATOMIC_MIN(target, value) atomicMin(target, value)
+float2 filterUnpackHalf2(uint u) { return unpackHalf2x16(u); }
+uint filterPackHalf2(float2 v) { return packHalf2x16(v); }
+float filterBitsToFloat(uint u) { return uintBitsToFloat(u); }
+uint filterFloatToBits(float v) { return floatBitsToUint(v); }
+#endif
+
+// v rounded to the nearest half-precision value, to be written into an RGBA16F pool image: Vulkan lets
+// the image write round towards zero (lavapipe does), which biased every store low by half an ulp on
+// average (docs/caustics.md "Memory"); a value half represents exactly is written exactly under any
+// rounding. In 32-bit arithmetic: the mantissa rounded to half's 10 bits (to nearest, ties to even),
+// below half's smallest normal to multiples of 2^-24.
+float filterNearestHalf(float v) {
+    if (abs(v) < 6.103515625e-5f) return round(v * 16777216.0f) / 16777216.0f;
+    uint u = filterFloatToBits(v);
+    return filterBitsToFloat((u + 0xFFFu + ((u >> 13) & 1u)) & ~0x1FFFu);
+}
+float4 filterNearestHalf4(float4 v) {
+    return float4(filterNearestHalf(v.x), filterNearestHalf(v.y), filterNearestHalf(v.z), filterNearestHalf(v.w));
+}
+#endif
+
+#endif  // CAUSTICS_PASS_CAUSTIC_FILTER_COMMON_H

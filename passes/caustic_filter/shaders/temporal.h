@@ -1,0 +1,52 @@
+#ifndef CAUSTICS_PASS_CAUSTIC_TEMPORAL_H
+#define CAUSTICS_PASS_CAUSTIC_TEMPORAL_H
+// caustics.temporal in the shared dialect (docs/shaders.md): temporal accumulation (SVGF, Schied et al.
+// 2017, section 4.1; docs/caustics.md "Temporal", "Moving caustics"). The pixel's world position goes
+// through last frame's viewProj; of the 2x2 history texels around that point, those of the same object
+// with a linear depth (clip w) and normal that agree are blended bilinearly (disocclusion test). The
+// history length n (a sample count, capped at maxHistory) makes the blend 1/n: until the cap the result
+// is the plain mean of every frame that saw the surface point, then an exponential average with weight
+// 1/maxHistory. The luminance moments accumulate the same way for the variance estimate. A history that
+// this frame's photons contradict (temporalHistoryRejected: the caustic moved) is dropped. Dispatched
+// over the tile list; a history texel exists only where last frame's slot map gave its tile a pool
+// tile. The history is ping-ponged (docs/caustics.md "History and guides"): this pass reads last frame's
+// pool and writes this frame's (the result before any spatial pass, and its guides), and, once per
+// frame, the a-trous passes' packed guide. Everything in the pool is pre-exposed half precision.
+// Entries: temporal.comp, temporal.hlsl; the thread function is temporal_thread.h.
+#include "filter_common.h"
+
+CAUSTICS_SHARED_BEGIN
+// Push constants (temporal_bindings.h), 16 bytes.
+struct TemporalParams {
+    uint historyValid;
+    float maxHistory;     // CausticsSettings::filterMaxHistory
+    float preExposure;    // this frame's (docs/caustics.md "Memory")
+    float historyScale;   // this frame's pre-exposure over the one the history was stored with
+    // 1: gLinearDepth is the second type's guide (depth, motion x, motion y, last frame's depth;
+    // docs/caustics.md "Second-type guides"): reproject with the receiver's own motion, not the camera ray's.
+    uint motionGuides;
+};
+CAUSTICS_CONST float kTemporalRejectDeviations = 3.0f;
+CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
+
+// Relative linear-depth tolerance for a reprojected history tap up to one pixel away: 1 % plus the
+// depth change across two pixel footprints on a surface seen at the given angle (the same footprint
+// argument as the first-type splat's depth test, docs/caustics.md "Forward trace").
+CAUSTICS_FN float temporalRelativeDepthTolerance(float tanHalfFovY, float imageHeight, float3 normal, float3 toEye) {
+    float cosView = max(abs(dot(normal, toEye)), 0.05f);
+    float tanView = sqrt(max(0.0f, 1.0f - cosView * cosView)) / cosView;
+    return 0.01f + 2.0f * (2.0f * tanHalfFovY / imageHeight) * tanView;
+}
+
+// The history test (docs/caustics.md "Moving caustics"): C and H the 3x3 sums of this frame's luminance
+// and of the history's mean, v the sum of the taps' per-frame variances, quantum one photon's luminance.
+CAUSTICS_FN bool temporalContradicts(float c, float h, float v, float quantum) {
+    return abs(c - h) > kTemporalRejectDeviations * sqrt(v) + 2.0f * quantum;
+}
+CAUSTICS_SHARED_END
+
+#if !defined(CAUSTICS_LANG_CPP)
+#include "temporal_thread.h"
+#endif
+
+#endif  // CAUSTICS_PASS_CAUSTIC_TEMPORAL_H

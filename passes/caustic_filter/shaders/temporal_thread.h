@@ -1,0 +1,183 @@
+#ifndef CAUSTICS_PASS_CAUSTIC_TEMPORAL_THREAD_H
+#define CAUSTICS_PASS_CAUSTIC_TEMPORAL_THREAD_H
+// caustics.temporal's thread function (GLSL and HLSL; temporal.h says what it computes) and the two
+// guides it packs.
+// The entry includes the camera's struct first (scene/camera.glsl or .hlsli: it has matrices, so it is
+// not in the shared dialect; the HLSL embedder inlines every include, whatever the #if around it).
+#include "bindings/caustic_temporal.h"   // generated from passes/caustic_filter/temporal_bindings.h
+#include "common/octahedral.h"
+#include "common/resources.h"
+
+// The history guides, one RG32UI texel (docs/caustics.md "History and guides"): x the linear depth and
+// the history length n (2 x half: 11 significant bits, exact integers up to 2048 > kMaxFilterHistory),
+// y the octahedral normal (2 x unorm8) and the object id's low 16 bits. Only the next frame's
+// disocclusion test reads them (1 % depth tolerance, a normal cosine of 0.9, id equality).
+struct FilterGuide {
+    float depth;
+    float historyLength;
+    float3 normal;
+    uint id;   // low 16 bits
+};
+uint2 filterPackGuide(float depth, float historyLength, float3 n, uint id) {
+    float l1 = abs(n.x) + abs(n.y) + abs(n.z);
+    n = l1 > 0.0f ? n / l1 : float3(0.0f, 0.0f, 1.0f);
+    float2 e = n.z >= 0.0f ? n.xy
+                           : (float2(1.0f, 1.0f) - abs(n.yx)) * float2(n.x >= 0.0f ? 1.0f : -1.0f, n.y >= 0.0f ? 1.0f : -1.0f);
+    uint2 q = uint2(round(clamp(e * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
+    return uint2(filterPackHalf2(float2(depth, historyLength)), q.x | (q.y << 8) | ((id & 0xFFFFu) << 16));
+}
+FilterGuide filterUnpackGuide(uint2 g) {
+    float2 dn = filterUnpackHalf2(g.x);
+    float2 e = float2(float(g.y & 0xFFu), float((g.y >> 8) & 0xFFu)) / 255.0f * 2.0f - 1.0f;
+    float3 n = float3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
+    float t = max(-n.z, 0.0f);
+    n.xy += float2(n.x >= 0.0f ? -t : t, n.y >= 0.0f ? -t : t);
+    FilterGuide r;
+    r.depth = dn.x;
+    r.historyLength = dn.y;
+    r.normal = normalize(n);
+    r.id = g.y >> 16;
+    return r;
+}
+uint filterGuideId(uint objectId) { return objectId & 0xFFFFu; }
+
+// The a-trous passes' guide of a pool texel, packed once per frame (docs/caustics.md "Cost"): x the
+// linear depth (32-bit float bits), y the normal as octahedral 2 x unorm16 (below 1e-4 rad), z the
+// object id, w the depth slope (2 x half). Unpacked by atrous_thread.h (atrousLoad).
+uint4 filterPackAtrousGuide(float depth, float3 n, uint id, float2 gradZ) {
+    float2 e = dot(abs(n), float3(1.0f, 1.0f, 1.0f)) > 0.0f ? octEncode(n) : float2(0.0f, 0.0f);
+    uint2 q = uint2(round(clamp(e * 0.5f + 0.5f, 0.0f, 1.0f) * 65535.0f));
+    return uint4(filterFloatToBits(depth), q.x | (q.y << 16), id, filterPackHalf2(gradZ));
+}
+
+// Last frame's pool texel of screen texel q, or (-1, -1) where its tile kept no history.
+int2 temporalHistoryTexel(int2 q) {
+    uint slot = CAUSTICS_TEXEL_UINT(previousSlots, q / kFilterTileSize);
+    return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, q);
+}
+
+// E[l], per-frame variance of l, n of a history texel (this frame's pre-exposed units).
+float3 temporalHistoryMoments(int2 h, FilterGuide g) {
+    float4 c = CAUSTICS_TEXEL(historyColor, h) * params.historyScale;
+    return float3(filterLuminance(c.rgb), c.a * c.a, g.historyLength);
+}
+
+// True when this frame's caustic around p is inconsistent with the history (the caustic moved: a light or
+// an object moved, which the camera reprojection cannot follow): over the 3x3 taps of this object (history
+// texels nearest to the reprojected point, offset alike) the sums of this frame's luminance C and of the
+// history's mean H differ by more than 3 deviations of one frame's 3x3 sum (the taps' per-frame
+// variances, temporal moments) plus 2 photons (q, the smallest non-zero luminance of this frame in the
+// 3x3): a caustic of ~1 photon per pixel per frame that leaves is caught in one frame, 3 photons where the
+// history was dark start a new one; stray photons do not.
+bool temporalHistoryRejected(int2 p, int2 nearest, int2 size, uint id) {
+    float c = 0.0f, h = 0.0f, v = 0.0f, quantum = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            int2 q = p + int2(dx, dy), hq = nearest + int2(dx, dy);
+            if (!filterInside(q, size.x, size.y) || !filterInside(hq, size.x, size.y)) continue;
+            if (CAUSTICS_TEXEL_UINT(gObjectId, q) != id) continue;
+            int2 ht = temporalHistoryTexel(hq);
+            if (ht.x < 0) continue;
+            FilterGuide g = filterUnpackGuide(CAUSTICS_TEXEL(historyGuides, ht).xy);
+            if (g.id != filterGuideId(id)) continue;
+            float l = filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure);
+            float3 m = temporalHistoryMoments(ht, g);
+            c += l;
+            h += m.x;
+            v += m.y;
+            if (l > 0.0f) quantum = quantum > 0.0f ? min(quantum, l) : l;
+        }
+    }
+    return temporalContradicts(c, h, v, quantum);
+}
+
+// Screen-space derivative of linear depth along `axis`: the smaller one-sided difference on the same
+// object, so a neighbour across a depth edge does not make the a-trous plane test lenient.
+float temporalDepthSlope(int2 p, int2 axis, int2 size, float z, uint id) {
+    float slope = 3.0e38f;
+    int2 ahead = p + axis, behind = p - axis;
+    if (filterInside(ahead, size.x, size.y) && CAUSTICS_TEXEL_UINT(gObjectId, ahead) == id)
+        slope = CAUSTICS_TEXEL(gLinearDepth, ahead).r - z;
+    if (filterInside(behind, size.x, size.y) && CAUSTICS_TEXEL_UINT(gObjectId, behind) == id) {
+        float back = z - CAUSTICS_TEXEL(gLinearDepth, behind).r;
+        if (abs(back) < abs(slope)) slope = back;
+    }
+    return slope < 3.0e38f ? slope : 0.0f;
+}
+
+void temporalThread(uint group, uint2 local) {
+    int2 p = filterTileOf(tilesLoad(group)) * kFilterTileSize + int2(local);
+    int2 size = int2(camera.frame.xy);
+    if (!filterInside(p, size.x, size.y)) return;
+    int2 pool = filterPoolTexel(group, p);
+    float3 cur = CAUSTICS_TEXEL(current, p).rgb * params.preExposure;
+    float l = filterLuminance(cur);
+    float depth = CAUSTICS_TEXEL(gLinearDepth, p).r;
+    float3 n = CAUSTICS_TEXEL(gNormal, p).xyz;
+    uint id = CAUSTICS_TEXEL_UINT(gObjectId, p);
+    float3 color = cur;
+    float moment2 = l * l;
+    float historyLength = 1.0f;
+    if (params.historyValid != 0u && id != 0u && depth > 0.0f) {
+        float3 world = cameraWorldPosition(camera, float2(p) + 0.5f, depth);
+        float4 clip = mul(camera.prevViewProj, float4(world, 1.0f));
+        float4 guide = CAUSTICS_TEXEL(gLinearDepth, p);
+        if (params.motionGuides != 0u) clip.w = guide.w;
+        if (clip.w > 0.0f) {
+            // Texel-centre coordinates.
+            float2 prev = params.motionGuides != 0u ? float2(p) + float2(guide.y, guide.z)
+                                                    : (clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f;
+            int2 base = int2(floor(prev));
+            float2 f = prev - float2(base);
+            float tolerance = clip.w * temporalRelativeDepthTolerance(camera.forward.w, float(size.y), n,
+                                                                      normalize(camera.eye.xyz - world));
+            float3 hColor = float3(0.0f, 0.0f, 0.0f), hMoments = float3(0.0f, 0.0f, 0.0f);
+            float wSum = 0.0f;
+            for (int i = 0; i < 4; ++i) {
+                int2 o = int2(i & 1, i >> 1);
+                int2 q = base + o;
+                if (!filterInside(q, size.x, size.y)) continue;
+                int2 ht = temporalHistoryTexel(q);
+                if (ht.x < 0) continue;
+                FilterGuide hg = filterUnpackGuide(CAUSTICS_TEXEL(historyGuides, ht).xy);
+                if (hg.id != filterGuideId(id)) continue;
+                if (abs(hg.depth - clip.w) > tolerance) continue;
+                if (dot(hg.normal, n) < 0.9f) continue;
+                float w = (o.x == 1 ? f.x : 1.0f - f.x) * (o.y == 1 ? f.y : 1.0f - f.y);
+                hColor += w * CAUSTICS_TEXEL(historyColor, ht).rgb * params.historyScale;
+                // Per-tap variance, not the moments: mixing the moments of neighbouring texels would add
+                // their signal difference (a focal spot's edge) to the variance.
+                hMoments += w * temporalHistoryMoments(ht, hg);
+                wSum += w;
+            }
+            // The test needs variances from the moments: histories shorter than kTemporalTrustedHistory
+            // frames are short already (their lag is at most that long).
+            bool rejected = wSum > 0.01f && hMoments.z / wSum >= kTemporalTrustedHistory &&
+                            temporalHistoryRejected(p, int2(floor(prev + 0.5f)), size, id);
+            if (wSum > 0.01f && !rejected) {
+                hColor /= wSum;
+                hMoments /= wSum;
+                hMoments.y += hMoments.x * hMoments.x;   // back to E[l^2] of the blended history
+                historyLength = min(hMoments.z + 1.0f, params.maxHistory);
+                float alpha = 1.0f / historyLength;
+                color = lerp(hColor, cur, alpha);
+                moment2 = lerp(hMoments.y, moment2, alpha);
+            }
+        }
+    }
+    // The variance leaves as a standard deviation: E[l^2] - E[l]^2 cancels in 32 bits, and the deviation
+    // has the range of the radiance, which half precision holds (docs/caustics.md "Memory").
+    float lm = filterLuminance(color);
+    float deviation = sqrt(max(0.0f, moment2 - lm * lm));
+    float2 gradZ = float2(temporalDepthSlope(p, int2(1, 0), size, depth, id), temporalDepthSlope(p, int2(0, 1), size, depth, id));
+    CAUSTICS_IMAGE_STORE(outColor, pool, filterNearestHalf4(float4(color, deviation)));
+    uint2 guide = filterPackGuide(depth, historyLength, n, id);
+#if defined(CAUSTICS_LANG_HLSL)
+    outGuides[pool] = guide;
+#else
+    imageStore(outGuides, pool, uvec4(guide, 0u, 0u));
+#endif
+    CAUSTICS_IMAGE_STORE(outFilterGuide, pool, filterPackAtrousGuide(depth, n, id, gradZ));
+}
+
+#endif  // CAUSTICS_PASS_CAUSTIC_TEMPORAL_THREAD_H

@@ -1,0 +1,53 @@
+#ifndef CAUSTICS_PASS_CAUSTIC_FILTER_TILES_THREAD_H
+#define CAUSTICS_PASS_CAUSTIC_FILTER_TILES_THREAD_H
+// caustics.filterTiles' thread function (GLSL and HLSL; tiles.h says what it computes).
+#include "tiles.h"
+// The entry includes the camera's struct first (scene/camera.glsl or .hlsli; temporal_thread.h says why).
+#if defined(CAUSTICS_LANG_HLSL)
+#define FILTER_ATOMIC_OR(target, value) InterlockedOr(target, value)
+#define FILTER_ATOMIC_MAX(target, value) InterlockedMax(target, value)
+#else
+#define FILTER_ATOMIC_OR(target, value) atomicOr(target, value)
+#define FILTER_ATOMIC_MAX(target, value) atomicMax(target, value)
+#endif
+#include "bindings/caustic_filter_tiles.h"   // generated from passes/caustic_filter/tiles_bindings.h
+#include "common/resources.h"
+
+FILTER_GROUPSHARED uint sPhotons;
+FILTER_GROUPSHARED uint sCarried;
+
+// Largest previous tile state among the history texels caustics.temporal may read for a pixel that
+// reprojects to `prev`: the 2x2 bilinear taps and the 3x3 around the nearest texel.
+uint filterCarriedState(float2 prev, int2 size) {
+    int2 lo = max(int2(floor(prev)) - int2(1, 1), int2(0, 0)), hi = min(int2(floor(prev)) + int2(2, 2), size - int2(1, 1));
+    if (lo.x > hi.x || lo.y > hi.y) return 0u;
+    uint m = 0u;
+    for (int ty = lo.y / kFilterTileSize; ty <= hi.y / kFilterTileSize; ++ty)
+        for (int tx = lo.x / kFilterTileSize; tx <= hi.x / kFilterTileSize; ++tx)
+            m = max(m, CAUSTICS_TEXEL_UINT(previousTiles, int2(tx, ty)) & kFilterTileKeepMask);
+    return m;
+}
+
+void filterTilesThread(uint2 group, uint2 pixel, uint local) {
+    if (local == 0u) {
+        sPhotons = 0u;
+        sCarried = 0u;
+    }
+    FILTER_BARRIER();
+    int2 p = int2(pixel);
+    int2 size = int2(camera.frame.xy);
+    if (p.x < size.x && p.y < size.y) {
+        float3 c = CAUSTICS_TEXEL(current, p).rgb;
+        if (max(c.r, max(c.g, c.b)) > 0.0f) FILTER_ATOMIC_OR(sPhotons, 1u);
+        float depth = CAUSTICS_TEXEL(gLinearDepth, p).r;
+        if (params.historyValid != 0u && CAUSTICS_TEXEL_UINT(gObjectId, p) != 0u && depth > 0.0f) {
+            float4 clip = mul(camera.prevViewProj, float4(cameraWorldPosition(camera, float2(p) + 0.5f, depth), 1.0f));
+            if (clip.w > 0.0f)
+                FILTER_ATOMIC_MAX(sCarried, filterCarriedState((clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f, size));
+        }
+    }
+    FILTER_BARRIER();
+    if (local == 0u) CAUSTICS_IMAGE_STORE_UINT(tileState, int2(group), filterTileState(sPhotons != 0u, sCarried, params.keepFrames));
+}
+
+#endif  // CAUSTICS_PASS_CAUSTIC_FILTER_TILES_THREAD_H

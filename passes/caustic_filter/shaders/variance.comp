@@ -1,0 +1,7 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+// Vulkan entry of caustics.variance; the body is variance.h (docs/shaders.md).
+#include "variance.h"
+layout(local_size_x = 8, local_size_y = 8) in;
+void main() { varianceThread(gl_WorkGroupID.x, gl_LocalInvocationID.xy); }

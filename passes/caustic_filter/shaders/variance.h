@@ -1,0 +1,99 @@
+#ifndef CAUSTICS_PASS_CAUSTIC_VARIANCE_H
+#define CAUSTICS_PASS_CAUSTIC_VARIANCE_H
+// caustics.variance in the shared dialect (docs/shaders.md): the variance of the accumulated luminance,
+// the scale of the a-trous luminance edge-stopping (SVGF section 4.2; docs/caustics.md "Variance").
+// With 4 or more frames of history it is temporal: the per-frame variance E[l^2] - E[l]^2 from the
+// accumulated moments, max(own, 3x3 mean). Shorter histories use a spatial estimate of the photon shot
+// noise: a pixel's caustic radiance is a sum of photon splats, so its per-frame variance is about q E[l],
+// q being the luminance one photon adds (a compound Poisson sum of near-equal quanta). q is the smallest
+// non-zero luminance of this frame in the 7x7 window (a pixel that one photon reached), E[l] is
+// max(own, 3x3 mean) of the accumulated luminance: a pixel that no photon reached inside a lit region is
+// a draw of zero from the region's mean, so it gets that mean's noise and the a-trous passes fill it.
+// SVGF's 7x7 sample variance would count a focal spot's own shape as noise and blur it away.
+// Output (pool, pre-exposed): rgb the mean, alpha the standard deviation of the accumulated mean,
+// sqrt(per-frame variance / n). Over the listed tiles; a neighbour in a tile without a pool tile counts
+// as zero in the 3x3 means. Entries: variance.comp, variance.hlsl.
+#include "filter_common.h"
+
+CAUSTICS_SHARED_BEGIN
+// Push constants (variance_bindings.h), 12 bytes.
+struct VarianceParams {
+    int width;
+    int height;
+    float preExposure;   // this frame's (docs/caustics.md "Memory")
+};
+CAUSTICS_CONST float kVarianceTemporalHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
+
+// The deviation of the accumulated mean the a-trous passes read: per-frame variance over n frames.
+CAUSTICS_FN float varianceDeviationOfMean(float perFrameVariance, float historyLength) {
+    return sqrt(perFrameVariance / max(historyLength, 1.0f));
+}
+CAUSTICS_SHARED_END
+
+#if !defined(CAUSTICS_LANG_CPP)
+#include "bindings/caustic_variance.h"   // generated from passes/caustic_filter/variance_bindings.h
+#include "common/resources.h"
+
+// This frame's pool texel of screen pixel q, or (-1, -1) where its tile has none.
+int2 variancePoolTexel(int2 q) {
+    uint slot = CAUSTICS_TEXEL_UINT(slotMap, q / kFilterTileSize);
+    return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, q);
+}
+
+// The history length n of a pool texel: the high half of the history guide's first word
+// (filterPackGuide, temporal_thread.h).
+float varianceHistoryLength(int2 t) { return filterUnpackHalf2(CAUSTICS_TEXEL(temporalGuides, t).x).y; }
+
+// 3x3 mean of the neighbours' temporal variance on the same object (SVGF prefilters the variance the
+// same way): a pixel's own moments from a few photons per frame estimate its variance poorly.
+float varianceLocalMeanTemporal(int2 p, uint id) {
+    float sum = 0.0f, count = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            int2 q = p + int2(dx, dy);
+            if (!filterInside(q, params.width, params.height) || CAUSTICS_TEXEL_UINT(gObjectId, q) != id) continue;
+            int2 t = variancePoolTexel(q);
+            float deviation = t.x >= 0 ? CAUSTICS_TEXEL(temporalColor, t).a : 0.0f;
+            sum += deviation * deviation;
+            count += 1.0f;
+        }
+    }
+    return sum / max(count, 1.0f);
+}
+
+// Photon shot noise q E[l] for a short history (above).
+float varianceShotNoise(int2 p, uint id, float accumulatedLuminance) {
+    float quantum = 3.0e38f;
+    float localSum = 0.0f, localCount = 0.0f;
+    for (int dy = -3; dy <= 3; ++dy) {
+        for (int dx = -3; dx <= 3; ++dx) {
+            int2 q = p + int2(dx, dy);
+            if (!filterInside(q, params.width, params.height) || CAUSTICS_TEXEL_UINT(gObjectId, q) != id) continue;
+            float l = filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure);
+            if (l > 0.0f) quantum = min(quantum, l);
+            if (abs(dx) <= 1 && abs(dy) <= 1) {
+                int2 t = variancePoolTexel(q);
+                if (t.x >= 0) localSum += filterLuminance(CAUSTICS_TEXEL(temporalColor, t).rgb);
+                localCount += 1.0f;
+            }
+        }
+    }
+    float expected = max(accumulatedLuminance, localSum / max(localCount, 1.0f));
+    return quantum < 3.0e38f ? quantum * expected : 0.0f;
+}
+
+void varianceThread(uint group, uint2 local) {
+    int2 p = filterTileOf(tilesLoad(group)) * kFilterTileSize + int2(local);
+    if (!filterInside(p, params.width, params.height)) return;
+    int2 own = filterPoolTexel(group, p);
+    float4 c = CAUSTICS_TEXEL(temporalColor, own);
+    float n = max(varianceHistoryLength(own), 1.0f);
+    uint id = CAUSTICS_TEXEL_UINT(gObjectId, p);
+    float variance = 0.0f;
+    if (id != 0u && n >= kVarianceTemporalHistory) variance = max(c.a * c.a, varianceLocalMeanTemporal(p, id));
+    else if (id != 0u) variance = varianceShotNoise(p, id, filterLuminance(c.rgb));
+    CAUSTICS_IMAGE_STORE(outColor, own, filterNearestHalf4(float4(c.rgb, varianceDeviationOfMean(variance, n))));
+}
+#endif
+
+#endif  // CAUSTICS_PASS_CAUSTIC_VARIANCE_H
