@@ -8,10 +8,7 @@
 //   caustics.atrous.N.weights   W_q of every pixel of the tile (atrous_weights.comp / .hlsl)
 //   caustics.atrous.N           the shares (atrous.comp / .hlsl into the pool; atrous_last.comp / .hlsl,
 //                               kAtrousLast, into caustics.radiance in radiance units)
-// Up to step kAtrousSharedMaxStep a group first loads its tile and an apron of 2 steps (the region,
-// (8 + 4 s)^2 pixels) into shared memory, once per pixel, instead of 25 fetches of each texture per pixel:
-// the guide caustics.temporal packed once per frame, the colour and, for the shares, W. Larger steps
-// fetch each tap (their regions would not fit).
+// Each tap is fetched (docs/caustics.md "Cost" has what a shared-memory region measured).
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
@@ -23,18 +20,6 @@ struct AtrousParams {
     float sigmaLuminance;
     float invPreExposure;   // the last iteration: pool units (pre-exposed) -> radiance
 };
-
-// The largest step whose region fits the shared arrays: (8 + 4 x 4)^2 = 576 pixels, 36 bytes each
-// (20.7 KB, under the 32 KB that D3D12 and lavapipe give a group).
-CAUSTICS_CONST int kAtrousSharedMaxStep = 4;
-CAUSTICS_CONST int kAtrousMaxRegionSide = 24;
-CAUSTICS_FN bool atrousUsesRegion(int stepWidth) { return stepWidth <= kAtrousSharedMaxStep; }
-// The region of a tile at step s: the tile and 2 s pixels around it (the taps of its pixels).
-CAUSTICS_FN int atrousApron(int stepWidth) { return 2 * stepWidth; }
-CAUSTICS_FN int atrousRegionSide(int stepWidth) { return kFilterTileSize + 2 * atrousApron(stepWidth); }
-// The tiles a region overlaps are the 3x3 around its own (an apron of at most 8 pixels = one tile):
-// index 0..8 of screen tile `tile` seen from the group's tile `own`.
-CAUSTICS_FN int atrousNeighbourTileIndex(int2 tile, int2 own) { return (tile.y - own.y + 1) * 3 + (tile.x - own.x + 1); }
 
 // B3-spline a-trous kernel taps for |offset| / step = 0, 1, 2 (1/16 (1 4 6 4 1)).
 CAUSTICS_FN float atrousKernelTap(int k) { return k == 0 ? 0.375f : (k == 1 ? 0.25f : 0.0625f); }
@@ -50,10 +35,11 @@ CAUSTICS_FN float atrousKernelTap(int k) { return k == 0 ? 0.375f : (k == 1 ? 0.
 // or a cusp stops the spreading (docs/caustics.md "Spatial"). Two reciprocals and one exponential per
 // weight (d^2 without its square root, w_n by squarings, w_z w_l in one exponential): the a-trous passes
 // evaluate it 50 times per pixel and iteration, and the GPU's special-function units are its bound.
-CAUSTICS_FN float atrousSpreadWeight(int2 offset, int stepWidth, float zq, float zp, float2 gradZq, float3 nq, float3 np,
+// `tap` is the offset in steps (-2..2 per axis): p = q + stepWidth tap.
+CAUSTICS_FN float atrousSpreadWeight(int2 tap, int stepWidth, float zq, float zp, float2 gradZq, float3 nq, float3 np,
                                      float lq, float lp, float varianceQ, float varianceP, float sigmaLuminance) {
-    int2 k = abs(offset) / stepWidth;
-    float planar = dot(gradZq, float2(offset));
+    int2 k = abs(tap);
+    float planar = dot(gradZq, float2(tap * stepWidth));
     float depthTerm = abs(zp - zq - planar) / (abs(planar) + 0.002f * zq * float(stepWidth));
     float difference = lp - lq;
     // max(): two pixels of no variance and equal luminance keep the weight (0 / tiny), unequal ones lose it.
