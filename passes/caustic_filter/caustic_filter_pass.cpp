@@ -157,7 +157,9 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         rg::RgTexture guide = ff.guide;
         const float pre = ff.preExposure;
         const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f,
-                                             motionGuides ? 1u : 0u};
+                                             motionGuides ? 1u : 0u, f.casterMotion && !motionGuides ? 1u : 0u};
+        f.casterMotionWords = b.read(f.casterMotionWords, rg::Access::SampledRead);
+        const rg::RgBuffer casterMotion = f.casterMotionWords;
         return [=](rg::PassContext& ctx) {
             // Only if the last EXECUTED frame wrote the copy this one reads (a dropped graph breaks it),
             // with the pre-exposure that frame stored it with.
@@ -177,7 +179,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
                                                        .buffer("tiles", ctx.buffer(t.list))
                                                        .texture("outColor", ctx.texture(o.color))
                                                        .texture("outGuides", ctx.texture(o.guides))
-                                                       .texture("outFilterGuide", ctx.texture(guide)),
+                                                       .texture("outFilterGuide", ctx.texture(guide))
+                                                       .buffer("casterMotion", ctx.buffer(casterMotion)),
                                                    push, t.args);
             if (recorded) {
                 // Committed when recorded, not when the graph was built: this frame's copy is the next

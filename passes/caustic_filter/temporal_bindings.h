@@ -17,6 +17,7 @@ inline constexpr Binding kCausticTemporalBindingList[] = {
     {"outColor", Kind::StorageTexture, 0, 9, "float4", ImageFormat::Rgba16f},    // this frame's pool
     {"outGuides", Kind::StorageTexture, 0, 10, "uint2", ImageFormat::Rg32ui},    // this frame's pool
     {"outFilterGuide", Kind::StorageTexture, 0, 11, "uint4", ImageFormat::Rgba32ui},   // the a-trous guide
+    {"casterMotion", Kind::StorageBufferRO, 0, 12, "uint"},      // caustics.forward's sums (common/caster_motion.h)
 };
 
 inline constexpr PassBindings kCausticTemporalBindings{"caustic_temporal", "passes/caustic_filter/temporal_bindings.h",

@@ -4,6 +4,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "caustic_filter/caustic_filter.h"
@@ -28,6 +29,17 @@ struct SphereCountReadback {
 // One sphere's AABB in the sphere BLAS (min xyz, max xyz); slots past a frame's sphere count stay zero
 // (backward_trace/specular_pixels_pass.cpp).
 inline constexpr uint32_t kSphereAabbBytes = 24;
+
+// The instance transforms of this frame and the one before (caster_motion.cpp; docs/caustics.md
+// "Moving casters"): taken when a new frame number is built, so views of one frame share them.
+struct CasterMotionState {
+    std::vector<glm::mat4> previous, current;
+    std::optional<uint32_t> frame;
+};
+// Per instance, the rows of prev x inverse(current) (a world point on the instance this frame -> where it
+// was last frame) and of its inverse (shaders/common/caster_motion.h); empty when there is no last frame, the instances changed, or no specular
+// instance moved.
+std::vector<glm::vec4> casterMotionRows(CasterMotionState& state, const scene::Scene& scene, uint32_t frameIndex);
 
 struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
@@ -71,6 +83,12 @@ struct CausticResources::Impl {
     // Sphere counts read back per view (keyed by its history) and frame slot (backward_trace/caustics/sphere_capacity.h).
     std::map<uint64_t, std::vector<SphereCountReadback>> sphereCounts;   // by CausticViewHistory::viewId
     CausticViewHistory ownHistory;   // used when CausticFrameInputs::history is null
+    CasterMotionState casterMotion;  // the instance transforms of the last two frames (caster_motion.cpp)
+    // Per frame slot: the caster motion rows and per-pixel words (CausticFrame::instanceMotionRows,
+    // casterMotionWords), persistent and grown on demand: as graph transients of a changing size they
+    // aliased buffers whose device addresses lavapipe then lost track of ("unrecognized BDA").
+    std::vector<rhi::BufferHandle> casterMotionRowBuffers, casterMotionWordBuffers;
+    Status ensureCasterMotion(uint32_t slot, uint64_t rowBytes, uint64_t wordBytes);
     // Binding sets made while recording must outlive the GPU's use: kept for framesInFlight frames.
     std::vector<std::vector<rhi::BindingSetHandle>> frameSets;
     uint32_t frameSlot = 0;
@@ -108,6 +126,13 @@ struct CausticFrame {
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereBlas, sphereTlas;
     SecondTypeGuides secondTypeGuides;   // caustics.secondTypeGuides (invalid without the second type)
+    // Caster motion (docs/caustics.md "Moving casters"): 6 rows per instance (casterMotionRows; empty when
+    // no specular instance moved),
+    // and the per-pixel sums the forward pass accumulates from them (4 words per pixel when moving,
+    // else a 16-byte placeholder the passes bind).
+    std::vector<glm::vec4> instanceMotion;
+    bool casterMotion = false;
+    rg::RgBuffer instanceMotionRows, casterMotionWords;
     CausticMapPlan plan;
     // The buffer the second type accumulates into: its own, or the first type's (one for both).
     rg::RgBuffer& secondTypeTarget() { return separateTypes ? radiance2 : radiance1; }

@@ -9,6 +9,11 @@ void appendCausticMemory(CausticResources& resources, std::vector<MemoryEntry>& 
     addMemoryEntry(out, "caustics.sphere_aabbs", r->sphereAabbs);
     addMemoryEntry(out, "caustics.sphere_blas", r->sphereBlas);
     addMemoryEntry(out, "caustics.sphere_tlas", r->sphereTlas);
+    // Caster motion (docs/caustics.md "Moving casters"), per frame slot: 16 bytes each unless a caster moved.
+    for (size_t i = 0; i < r->casterMotionWordBuffers.size(); ++i) {
+        addMemoryEntry(out, "caustics.slot" + std::to_string(i) + ".caster_motion", r->casterMotionWordBuffers[i]);
+        addMemoryEntry(out, "caustics.slot" + std::to_string(i) + ".instance_motion", r->casterMotionRowBuffers[i]);
+    }
     // One 4-byte readback per view and frame slot (sphere_capacity.h): summed, with their count.
     MemoryEntry readbacks{"caustics.sphere_count_readbacks", 0, MemoryKind::Persistent};
     uint32_t count = 0;

@@ -9,6 +9,7 @@
 
 #include "caustic_maps/caustic_internal.h"
 #include "caustics/sphere_capacity.h"
+#include "common/caster_motion.h"
 #include "common/octahedral.h"
 
 namespace caustics {
@@ -40,6 +41,12 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
             f.owners = buffer("caustics.layerOwners", std::max<size_t>(1, f.plan.instanceLayers.size()) * 4, storage);
         }
         std::vector<uint32_t> owners = f.plan.instanceLayers;
+        // Caster motion (docs/caustics.md "Moving casters"): per-instance rows, and 4 words per pixel
+        // (the displacement sums x, y, z in 1/kCasterMotionScale m, the photon count), imported from the
+        // frame slot (addCausticPasses sized them).
+        const std::vector<glm::vec4> motionRows = f.casterMotion ? f.instanceMotion : std::vector<glm::vec4>();
+        f.instanceMotionRows = b.write(f.instanceMotionRows, rg::Access::CopyDest);
+        f.casterMotionWords = b.write(f.casterMotionWords, rg::Access::CopyDest);
         // The backward grid (specular pixels, 1, 1), counted up by caustics.specularPixels.
         const bool secondType = f.in->settings.secondType && !f.plan.maps.empty();
         if (secondType) f.backwardArgs = buffer("caustics.backwardArgs", 12, storage | rhi::BufferUsage::Indirect);
@@ -67,6 +74,9 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
                 else cmd.writeBuffer(ctx.buffer(h.owners), owners.data(), owners.size() * 4);
             }
             if (secondType) cmd.writeBuffer(ctx.buffer(h.backwardArgs), backwardGrid, sizeof(backwardGrid));
+            if (motionRows.empty()) cmd.fillBuffer(ctx.buffer(h.instanceMotionRows), 0);
+            else cmd.writeBuffer(ctx.buffer(h.instanceMotionRows), motionRows.data(), motionRows.size() * 16);
+            cmd.fillBuffer(ctx.buffer(h.casterMotionWords), 0);
         };
     });
 }
@@ -163,6 +173,18 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     f.wideFixedPoint = !res->floatAtomics && res->int64Atomics;
     f.fixedPointScale = fixedPointScale(f.wideFixedPoint, in.settings.exposure * in.scene->exposure);
     f.plan = std::move(plan);
+    // Taken every frame (the next frame compares with it), used only by the filter's history.
+    f.instanceMotion = casterMotionRows(res->casterMotion, *in.scene, in.frameIndex);
+    f.casterMotion = in.settings.filter && in.settings.filterCasterMotion && !f.instanceMotion.empty() &&
+                     f.instanceMotion.size() == shader::kCasterMotionRowsPerInstance * size_t(f.plan.instanceCount);
+
+    // The slot's caster motion buffers: 16 bytes (bound, unread) unless a caster moved.
+    const uint64_t motionWordBytes = f.casterMotion ? uint64_t(f.width) * f.height * 4 * shader::kCasterMotionWords : 16;
+    CAUSTICS_CHECK(res->ensureCasterMotion(slot, f.casterMotion ? f.instanceMotion.size() * 16 : 16, motionWordBytes));
+    f.instanceMotionRows = graph.importBuffer("caustics.instanceMotion", res->casterMotionRowBuffers[slot],
+                                              rhi::ResourceState::Common, rhi::ResourceState::Common);
+    f.casterMotionWords = graph.importBuffer("caustics.casterMotion", res->casterMotionWordBuffers[slot],
+                                             rhi::ResourceState::Common, rhi::ResourceState::Common);
 
     CausticOutputs out;
     out.floatAtomics = res->floatAtomics;

@@ -9,7 +9,7 @@
 
 namespace caustics::shader_bindings {
 
-constexpr std::array<Binding, 10> forwardBindingList(std::string_view radianceWord, uint32_t radianceStride) {
+constexpr std::array<Binding, 12> forwardBindingList(std::string_view radianceWord, uint32_t radianceStride) {
     return {{
         {"camera", Kind::ConstantBuffer, 1, 0, "CameraConstants"},          // common/camera.h
         {"maps", Kind::StorageBufferRO, 1, 1, "CausticMap", {}, 176},       // common/caustic_map.h
@@ -21,6 +21,9 @@ constexpr std::array<Binding, 10> forwardBindingList(std::string_view radianceWo
         {"stats", Kind::StorageBufferRW, 1, 7, "uint"},                     // common/caustic_stats.h
         {"plans", Kind::StorageBufferRW, 1, 8, "CausticLayerPlan", {}, 32}, // common/layer_plan.h
         {"owners", Kind::StorageBufferRO, 1, 9, "uint"},                    // instance -> layer, per light row
+        // Caster motion (common/caster_motion.h): 3 rows per instance, 4 words per pixel.
+        {"instanceMotion", Kind::StorageBufferRO, 1, 10, "float4"},
+        {"casterMotion", Kind::StorageBufferRW, 1, 11, "uint"},
     }};
 }
 

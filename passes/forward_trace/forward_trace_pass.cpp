@@ -30,6 +30,8 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
         f.layerPlans = b.write(f.layerPlans, rg::Access::StorageReadWrite);
         f.owners = b.read(f.owners, rg::Access::SampledRead);
+        f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
+        f.casterMotionWords = b.write(f.casterMotionWords, rg::Access::StorageReadWrite);
         // Only the second type's gather reads the hits: without it the pass stores none, into a
         // one-record buffer the binding needs (docs/caustics.md, "Memory"), and exports no hit buffer.
         // A launch stores at most one hit, so the launch bound caps the buffer (docs/caustics.md, "Memory").
@@ -44,7 +46,9 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
         const uint32_t layers = uint32_t(f.plan.maps.size());
         const shader::ForwardParams push{s.mapResolution, layers, f.plan.instanceCount, s.maxSpecularDepth,
                                          f.in->frameIndex * 0x9E3779B9u + s.seed,
-                                         s.russianRoulette ? shader::kForwardRussianRoulette : 0u, maxStoredHits, 0};
+                                         (s.russianRoulette ? shader::kForwardRussianRoulette : 0u) |
+                                             (f.casterMotion ? shader::kForwardCasterMotion : 0u),
+                                         maxStoredHits, 0};
         const uint64_t directLaunches = forwardLaunchBound(s, f.plan);
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
@@ -61,6 +65,8 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
                             .buffer("stats", ctx.buffer(h.stats))
                             .buffer("plans", ctx.buffer(h.layerPlans))
                             .buffer("owners", ctx.buffer(h.owners))
+                            .buffer("instanceMotion", ctx.buffer(h.instanceMotionRows))
+                            .buffer("casterMotion", ctx.buffer(h.casterMotionWords))
                             .desc();
             if (!desc) {
                 log(LogLevel::Error, "caustics.forward: " + desc.message());

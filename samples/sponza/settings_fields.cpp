@@ -79,6 +79,7 @@ const std::map<std::string, Setter>& setters() {
         {"maxStoredHits", countField(&CausticsSettings::maxStoredHits)},
         {"filter", boolField(&CausticsSettings::filter)},
         {"filterMaxHistory", countField(&CausticsSettings::filterMaxHistory)},
+        {"filterCasterMotion", boolField(&CausticsSettings::filterCasterMotion)},
         {"atrousIterations", countField(&CausticsSettings::atrousIterations)},
         {"filterLuminanceSigma", floatField(&CausticsSettings::filterLuminanceSigma)},
         {"exposure", floatField(&CausticsSettings::exposure)},

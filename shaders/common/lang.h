@@ -41,6 +41,7 @@ using uint2 = glm::uvec2;
 using uint3 = glm::uvec3;
 using uint4 = glm::uvec4;
 using int2 = glm::ivec2;
+using int3 = glm::ivec3;
 
 using glm::abs;
 using glm::acos;
@@ -59,6 +60,7 @@ using glm::min;
 using glm::normalize;
 using glm::pow;
 using glm::reflect;
+using glm::round;
 using glm::sin;
 using glm::sqrt;
 using glm::tan;
@@ -99,6 +101,7 @@ inline float3 toFloat3(float4 v) { return float3(v); }
 #define uint3 uvec3
 #define uint4 uvec4
 #define int2 ivec2
+#define int3 ivec3
 #define splat2(x) vec2(x)
 #define splat3(x) vec3(x)
 #define toFloat3(v) ((v).xyz)

@@ -16,7 +16,7 @@
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (temporal_bindings.h), 16 bytes.
+// Push constants (temporal_bindings.h), 24 bytes.
 struct TemporalParams {
     uint historyValid;
     float maxHistory;     // CausticsSettings::filterMaxHistory
@@ -25,9 +25,13 @@ struct TemporalParams {
     // 1: gLinearDepth is the second type's guide (depth, motion x, motion y, last frame's depth;
     // docs/caustics.md "Second-type guides"): reproject with the receiver's own motion, not the camera ray's.
     uint motionGuides;
+    // 1: casterMotion holds this frame's caster motion sums (docs/caustics.md "Moving casters").
+    uint casterMotion;
 };
 CAUSTICS_CONST float kTemporalRejectDeviations = 3.0f;
-CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
+CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;
+// History length cap where a moving caster carries the caustic (docs/caustics.md "Moving casters").
+CAUSTICS_CONST float kTemporalMovingHistory = 8.0f;   // SVGF's threshold for trusting the temporal moments
 
 // Relative linear-depth tolerance for a reprojected history tap up to one pixel away: 1 % plus the
 // depth change across two pixel footprints on a surface seen at the given angle (the same footprint

@@ -5,6 +5,7 @@
 // The entry includes the camera's struct first (scene/camera.glsl or .hlsli: it has matrices, so it is
 // not in the shared dialect; the HLSL embedder inlines every include, whatever the #if around it).
 #include "bindings/caustic_temporal.h"   // generated from passes/caustic_filter/temporal_bindings.h
+#include "common/caster_motion.h"
 #include "common/octahedral.h"
 #include "common/resources.h"
 
@@ -105,6 +106,58 @@ float temporalDepthSlope(int2 p, int2 axis, int2 size, float z, uint id) {
     return slope < 3.0e38f ? slope : 0.0f;
 }
 
+// Where the caustic at p was last frame, minus where it is (common/caster_motion.h): the mean receiver
+// shift of the photons that reached p's 3x3 this frame (the 3x3 fills the pixels no photon reached
+// inside a moving caustic); zero where none did.
+float4 temporalCasterShift(int2 p, int2 size) {
+    int3 sum = int3(0, 0, 0);
+    uint photons = 0u;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            int2 q = p + int2(dx, dy);
+            if (!filterInside(q, size.x, size.y)) continue;
+            uint i = kCasterMotionWords * uint(q.y * size.x + q.x);
+            sum += int3(int(casterMotionLoad(i)), int(casterMotionLoad(i + 1u)), int(casterMotionLoad(i + 2u)));
+            photons += casterMotionLoad(i + 3u);
+        }
+    }
+    // w: 1 where a photon reached the 3x3.
+    return photons > 0u ? float4(float3(sum) / (kCasterMotionScale * float(photons)), 1.0f) : float4(0.0f, 0.0f, 0.0f, 0.0f);
+}
+
+// The history colour at texel-centre position base + f by Catmull-Rom (4x4 texels) instead of
+// bilinear: a caustic carried by a moving caster is resampled between texels every frame, and bilinear
+// resampling blurred a one-pixel focal line over three pixels in 16 frames (docs/caustics.md "Moving
+// casters"). Kept within the 2x2 texels' range (no ringing, no negative radiance); `bilinear` where a
+// tap lies outside the view, has no history or another object.
+float3 temporalCatmullRom(int2 base, float2 f, uint id, float3 bilinear) {
+    float2 f2 = f * f, f3 = f2 * f;
+    float2 w[4];
+    w[0] = -0.5f * f3 + f2 - 0.5f * f;
+    w[1] = 1.5f * f3 - 2.5f * f2 + 1.0f;
+    w[2] = -1.5f * f3 + 2.0f * f2 + 0.5f * f;
+    w[3] = 0.5f * f3 - 0.5f * f2;
+    int2 size = int2(camera.frame.xy);
+    float3 sum = float3(0.0f, 0.0f, 0.0f);
+    float3 lo = float3(3.0e38f, 3.0e38f, 3.0e38f), hi = float3(0.0f, 0.0f, 0.0f);
+    for (int j = 0; j < 4; ++j) {
+        for (int i = 0; i < 4; ++i) {
+            int2 q = base + int2(i - 1, j - 1);
+            if (!filterInside(q, size.x, size.y)) return bilinear;
+            int2 ht = temporalHistoryTexel(q);
+            if (ht.x < 0) return bilinear;
+            if (filterUnpackGuide(CAUSTICS_TEXEL(historyGuides, ht).xy).id != filterGuideId(id)) return bilinear;
+            float3 c = CAUSTICS_TEXEL(historyColor, ht).rgb * params.historyScale;
+            sum += (w[i].x * w[j].y) * c;
+            if (i >= 1 && i <= 2 && j >= 1 && j <= 2) {
+                lo = min(lo, c);
+                hi = max(hi, c);
+            }
+        }
+    }
+    return clamp(sum, lo, hi);
+}
+
 void temporalThread(uint group, uint2 local) {
     int2 p = filterTileOf(tilesLoad(group)) * kFilterTileSize + int2(local);
     int2 size = int2(camera.frame.xy);
@@ -120,7 +173,15 @@ void temporalThread(uint group, uint2 local) {
     float historyLength = 1.0f;
     if (params.historyValid != 0u && id != 0u && depth > 0.0f) {
         float3 world = cameraWorldPosition(camera, float2(p) + 0.5f, depth);
-        float4 clip = mul(camera.prevViewProj, float4(world, 1.0f));
+        // The history of a caustic whose caster moved lies where the caustic was (its receiver stays).
+        float3 source = world;
+        bool carried = false;   // the history moves with a caster (temporalCatmullRom)
+        if (params.casterMotion != 0u && params.motionGuides == 0u) {
+            float4 shift = temporalCasterShift(p, size);
+            source += shift.xyz;
+            carried = shift.w > 0.0f;
+        }
+        float4 clip = mul(camera.prevViewProj, float4(source, 1.0f));
         float4 guide = CAUSTICS_TEXEL(gLinearDepth, p);
         if (params.motionGuides != 0u) clip.w = guide.w;
         if (clip.w > 0.0f) {
@@ -156,6 +217,7 @@ void temporalThread(uint group, uint2 local) {
                             temporalHistoryRejected(p, int2(floor(prev + 0.5f)), size, id);
             if (wSum > 0.01f && !rejected) {
                 hColor /= wSum;
+                if (carried && wSum > 0.999f) hColor = temporalCatmullRom(base, f, id, hColor);
                 hMoments /= wSum;
                 hMoments.y += hMoments.x * hMoments.x;   // back to E[l^2] of the blended history
                 historyLength = min(hMoments.z + 1.0f, params.maxHistory);

@@ -11,6 +11,7 @@
 // trace.rmiss, trace.hlsl.
 #include "common/bsdf.h"
 #include "common/camera.h"
+#include "common/caster_motion.h"
 #include "common/caustic_hit.h"
 #include "common/caustic_map.h"
 #include "common/emission.h"
@@ -27,11 +28,14 @@ struct ForwardParams {
     uint instanceCount;   // row length of the owners table
     uint maxDepth;        // specular events a path may have
     uint frame;           // the frame's random key
-    uint flags;           // kForwardRussianRoulette
+    uint flags;           // kForwardRussianRoulette, kForwardCasterMotion
     uint maxStoredHits;   // records the hit buffer holds
     uint pad;
 };
 CAUSTICS_CONST uint kForwardRussianRoulette = 1u;
+// Accumulate where each splat would have landed under last frame's instance transforms (instanceMotion,
+// casterMotion; docs/caustics.md "Moving casters").
+CAUSTICS_CONST uint kForwardCasterMotion = 2u;
 
 // A photon leaving a map texel: its origin, unit direction and flux (lm per channel).
 struct ForwardPhoton {
@@ -124,7 +128,24 @@ CAUSTICS_SHARED_END
 
 // Light-tracing estimator (shaders/common/camera.h) with the camera G-buffer as the visibility test
 // (paper Figure 4b): same object and a depth within the pixel's footprint on the surface.
-void splatFirstType(CausticHit hit) {
+// The splat's caster motion: the receiver shift summed into its pixel's words, and one photon counted.
+void addCasterMotion(uint pixel, float3 shift) {
+    int3 q = casterMotionFixed(shift);
+    casterMotionAtomicAdd(kCasterMotionWords * pixel, uint(q.x));
+    casterMotionAtomicAdd(kCasterMotionWords * pixel + 1u, uint(q.y));
+    casterMotionAtomicAdd(kCasterMotionWords * pixel + 2u, uint(q.z));
+    casterMotionAtomicAdd(kCasterMotionWords * pixel + 3u, 1u);
+}
+
+// Instance i's motion applied to a point (w = 1) or a direction (w = 0): `rows` 0 takes this frame's pose
+// to last frame's, 3 last frame's to this frame's (kCasterMotionRowsPerInstance rows per instance).
+float3 instanceMotionApply(uint instance, uint rows, float3 v, float w) {
+    float4 p = float4(v, w);
+    uint r = kCasterMotionRowsPerInstance * instance + rows;
+    return float3(dot(instanceMotionLoad(r), p), dot(instanceMotionLoad(r + 1u), p), dot(instanceMotionLoad(r + 2u), p));
+}
+
+void splatFirstType(CausticHit hit, float4 receiverShift) {
     float3 x = hit.position;
     float3 nFacing = hit.normal;
     PinholeCamera cam = cameraPinhole(camera);
@@ -138,7 +159,9 @@ void splatFirstType(CausticHit hit) {
     float gDepth = CAUSTICS_TEXEL(gLinearDepth, px).r;
     if (!splatDepthMatches(cam, pr.depth, gDepth, cosSurface)) return;
     float factor = pinholeSplatFactor(cam, pr.cosTheta, cosSurface, pr.distance);
-    addRadiance(uint(px.y) * camera.frame.x + uint(px.x), causticHitReflectedFlux(hit, toEye) * factor);
+    uint pixel = uint(px.y) * camera.frame.x + uint(px.x);
+    addRadiance(pixel, causticHitReflectedFlux(hit, toEye) * factor);
+    if (receiverShift.w > 0.0f) addCasterMotion(pixel, receiverShift.xyz);
     statsAtomicAdd(kStatSplats, 1u);
 }
 
@@ -176,6 +199,10 @@ void forwardLaunch(uint launch, uint launchCount) {
     float3 sigma = splat3(0.0f);
     float3 throughput = splat3(1.0f);
     uint events = 0u;
+    // Caster motion (kForwardCasterMotion): last frame's position of the photon's last moving specular
+    // vertex minus this frame's; a static specular vertex after it passes the shift on (first order).
+    bool motion = (params.flags & kForwardCasterMotion) != 0u;
+    float3 vertexShift = splat3(0.0f);
     uint segments = 0u;   // one atomic per path, not per segment (kStatForwardSegments)
     for (uint vertex = 0u; vertex <= params.maxDepth + 1u; ++vertex) {
         TracePayload hit = traceScene(origin, 0.0f, dir, 1.0e30f);
@@ -197,6 +224,10 @@ void forwardLaunch(uint launch, uint launchCount) {
             if (ev.kind == kEventAbsorbed) break;
             if (ev.kind != kEventDiffuse) {
                 ++events;
+                if (motion && hit.instance < params.instanceCount) {
+                    float3 shift = instanceMotionApply(hit.instance, 0u, x, 1.0f) - x;
+                    if (dot(shift, shift) > 1e-10f) vertexShift = shift;   // over 10 um: not rounding
+                }
                 flux *= ev.weight;
                 throughput *= ev.weight;
                 dir = ev.direction;
@@ -221,7 +252,10 @@ void forwardLaunch(uint launch, uint launchCount) {
         CausticHit stored = makeCausticHit(x, h.objectId, nFacing, m.light, flux, -dir, receiverBrdfMaterial(h));
         uint slot = statsAtomicAdd(kStatStoredHitAttempts, 1u);
         if (slot < params.maxStoredHits) hitsStore(slot, packCausticHit(stored));
-        splatFirstType(stored);
+        // The receiver shift where the photon's chain moved (docs/caustics.md "Moving casters"); w = 0: none.
+        float4 shift = float4(0.0f, 0.0f, 0.0f, 0.0f);
+        if (motion && dot(vertexShift, vertexShift) > 0.0f) shift = float4(casterMotionReceiverShift(vertexShift, dir, nFacing), 1.0f);
+        splatFirstType(stored, shift);
         break;
     }
     statsAtomicAdd(kStatForwardSegments, segments);

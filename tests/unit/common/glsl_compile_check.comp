@@ -14,6 +14,7 @@
 #include "common/bsdf.h"
 #include "common/ray_differential.h"
 #include "common/gather_disk.h"
+#include "common/caster_motion.h"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) buffer Out { float4 values[]; };
