@@ -26,6 +26,18 @@ CAUSTICS_FN float fresnelDielectric(float cosThetaI, float eta) {
     return 0.5f * (r.x + r.y);
 }
 
+// Thin-walled glass (glTF transmission without KHR_materials_volume) is a pane: two parallel interfaces
+// and a lossless inside (glTF gives a thin wall no thickness to absorb over). Each face reflects R from
+// either side (Stokes relations r' = -r, t t' = 1 - r^2) and the light between the faces is summed over
+// all inner reflections, a geometric series in R^2:
+//   R' = R + (1 - R)^2 R / (1 - R^2) = 2R / (1 + R),   T' = (1 - R)^2 / (1 - R^2) = (1 - R) / (1 + R).
+// s and p do not mix at parallel planar faces, so the series is summed per polarisation and then
+// averaged (docs/physics.md "Thin-walled glass"). ior: the pane's index against the outside (air).
+CAUSTICS_FN float thinPaneReflectance(float cosThetaI, float ior) {
+    float2 r = fresnelDielectricPolarized(cosThetaI, ior);
+    return r.x / (1.0f + r.x) + r.y / (1.0f + r.y);
+}
+
 // Normal-incidence reflectance ((eta - 1) / (eta + 1))^2.
 CAUSTICS_FN float dielectricF0(float eta) {
     float r = (eta - 1.0f) / (eta + 1.0f);

@@ -7,6 +7,8 @@
 //                                           else refract with probability transmission, weight
 //                                           baseColor; else the diffuse base layer (kind Diffuse:
 //                                           the caller ends the specular chain there).
+//   thin wall (KHR_materials_volume absent): as a dielectric with F the pane's 2R/(1+R), both faces
+//                                           and their inner reflections summed; it does not bend.
 // Each lobe is picked with its physical probability, so Fresnel cancels out of the weights
 // (importance sampling). Rough surfaces sample a GGX microfacet normal first (Walter et al. 2007).
 #include "common/fresnel.h"
@@ -80,7 +82,8 @@ CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMateria
         lobeWeight = fresnelSchlick(mat.baseColor, cosOm);
     } else {
         pick = (pick - mat.metallic) / max(1.0f - mat.metallic, 1.0e-7f);
-        float f = fresnelDielectric(cosOm, etaT / etaI);
+        // A thin wall reflects as a pane with both faces' inner reflections summed (common/fresnel.h).
+        float f = mat.thinWalled ? thinPaneReflectance(cosOm, mat.ior) : fresnelDielectric(cosOm, etaT / etaI);
         if (pick < f) {
             doReflect = true;
         } else {

@@ -7,7 +7,8 @@
 // glass shows its Fresnel reflection as well as what lies behind it:
 //   metal (metallic > 0.5): reflection, weight Schlick(F0 = baseColor, cos i);
 //   dielectric: reflection, weight F (exact Fresnel), and refraction, weight
-//               transmission (1 - F) baseColor (none under total internal reflection).
+//               transmission (1 - F) baseColor (none under total internal reflection);
+//   thin wall:  the same with F the pane's 2R/(1+R) (both faces, inner reflections summed), unbent.
 // The (etaI/etaT)^2 radiance scaling of refraction is left out: a camera path that enters a closed
 // object also leaves it, and the two factors cancel.
 #include "common/fresnel.h"
@@ -36,7 +37,7 @@ CAUSTICS_FN ViewLobes specularViewLobes(float3 d, float3 n, float3 baseColor, fl
         return l;
     }
     float eta = thinWalled ? 1.0f : (entering ? ior : 1.0f / ior);
-    float fr = fresnelDielectric(cosI, thinWalled ? ior : eta);
+    float fr = thinWalled ? thinPaneReflectance(cosI, ior) : fresnelDielectric(cosI, eta);
     l.reflectWeight = splat3(fr);
     float3 t;
     if (thinWalled) {

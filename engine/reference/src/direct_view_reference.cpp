@@ -81,7 +81,7 @@ glm::vec3 traceView(const ViewContext& ctx, const glm::vec3& origin, const glm::
 
     bool entering = glm::dot(dir, ng) < 0.0f;
     sh::ViewLobes lobes = sh::specularViewLobes(dir, facing, albedo, mat.metallic, mat.transmission, mat.ior,
-                                                mat.thickness <= 0.0f, entering);
+                                                mat.isThinWalled(), entering);
     float eps = rayEpsilon(x);
     auto follow = [&](const glm::vec3& d, const glm::vec3& w) {
         glm::vec3 branch = weight * w;

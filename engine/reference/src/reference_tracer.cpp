@@ -42,7 +42,7 @@ sh::OpticalMaterial opticalMaterial(const scene::Material& m) {
     o.roughness = m.roughness;
     o.transmission = m.transmission;
     o.ior = m.ior;
-    o.thinWalled = m.thickness <= 0.0f;
+    o.thinWalled = m.isThinWalled();
     return o;
 }
 

@@ -18,7 +18,7 @@ namespace {
 float rayEpsilon(const glm::vec3& p) { return 1e-4f * (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})); }
 
 sh::OpticalMaterial opticalMaterial(const scene::Material& m) {
-    return sh::OpticalMaterial{m.baseColor, m.metallic, m.roughness, m.transmission, m.ior, m.thickness <= 0.0f};
+    return sh::OpticalMaterial{m.baseColor, m.metallic, m.roughness, m.transmission, m.ior, m.isThinWalled()};
 }
 
 // Bilinear read of the receiver histogram at world point p (bin centres at (i + 0.5) / N).

@@ -21,7 +21,7 @@ GpuMaterial toGpuMaterial(const Material& m) {
     g.baseColorTexture = m.baseColorTexture;
     g.flags = (m.isSpecular() ? kMaterialSpecular : 0u) | (m.transmission > 0.0f ? kMaterialTransmissive : 0u) |
               (m.metallic > 0.5f ? kMaterialMetallic : 0u) | (m.doubleSided ? kMaterialDoubleSided : 0u) |
-              (m.transmission > 0.0f && m.thickness <= 0.0f ? kMaterialThinWalled : 0u);
+              (m.isThinWalled() ? kMaterialThinWalled : 0u);
     return g;
 }
 

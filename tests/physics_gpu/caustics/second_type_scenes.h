@@ -76,7 +76,8 @@ inline scene::Camera sideCausticCamera() {
 
 // A 1 cm glass plate (0.3 m square) 0.15 m in front of the eye, perpendicular to the view axis: it fills
 // the view, and the light (from the upper -x side) reaches neither it nor its shadow in the view.
-inline uint32_t addPlateInFrontOfCamera(scene::Scene& s, const scene::Camera& c, float ior) {
+// thickness 0: a thin-walled pane instead (one quad, no KHR_materials_volume; docs/physics.md).
+inline uint32_t addPlateInFrontOfCamera(scene::Scene& s, const scene::Camera& c, float ior, float thickness = 0.01f) {
     glm::vec3 axis = glm::normalize(c.target - c.eye);
     glm::vec3 centre = c.eye + 0.15f * axis;
     // Box local +Y (the 1 cm direction) along the view axis.
@@ -86,9 +87,11 @@ inline uint32_t addPlateInFrontOfCamera(scene::Scene& s, const scene::Camera& c,
     m[1] = glm::vec4(axis, 0.0f);
     m[2] = glm::vec4(glm::cross(x, axis), 0.0f);
     m[3] = glm::vec4(centre, 1.0f);
-    scene::Mesh plate = scene::makeBox({0.15f, 0.005f, 0.15f});
+    scene::Mesh plate = thickness > 0.0f ? scene::makeBox({0.15f, 0.5f * thickness, 0.15f}) : scene::makePlane(0.15f, 0.15f);
     scene::sortTrianglesMorton(plate);
-    return addSceneObject(s, std::move(plate), glassMaterial(ior, 0.01f), m);
+    scene::Material glass = glassMaterial(ior, thickness);
+    glass.doubleSided = thickness <= 0.0f;
+    return addSceneObject(s, std::move(plate), glass, m);
 }
 
 // Thin wall: a diffuse wall 2 cm thick (x in [-0.01, 0.01]), 0.25 m tall, along z; a horizontal glass

@@ -23,6 +23,10 @@ Solid boxSolid(Vec3 centre, Vec3 halfExtent, const glm::dmat3& axes) {
     return s;
 }
 
+Solid paneSolid(Vec3 centre, double halfX, double halfZ, const glm::dmat3& axes) {
+    return boxSolid(centre, Vec3(halfX, 0.0, halfZ), axes);
+}
+
 Solid cylinderSolid(double axisX, double axisZ, double yBase, double radius, double height) {
     Solid s;
     s.kind = Solid::Kind::Patches;

@@ -38,6 +38,10 @@ struct Optic {
     double ior = 1.5;
     Vec3 sigmaA{0.0};   // 1/m inside a dielectric (Beer-Lambert)
     Vec3 f0{0.95};      // conductor: glTF 2.0 Appendix B's Schlick F0 = baseColor
+    // Dielectric without a volume (glTF thin-walled, KHR_materials_volume absent): each surface is a pane
+    // of two parallel faces, unbent, whose inner reflections the tracer follows one by one (use it on a
+    // paneSolid, which has one surface).
+    bool thinWalled = false;
 };
 
 struct Object {
@@ -69,6 +73,8 @@ struct Scene {
 // Solids the scenes are made of.
 Solid sphereSolid(Vec3 centre, double radius);
 Solid boxSolid(Vec3 centre, Vec3 halfExtent, const glm::dmat3& axes = glm::dmat3(1.0));
+// A flat rectangle without thickness (a box of zero height in its frame): the surface of a thin wall.
+Solid paneSolid(Vec3 centre, double halfX, double halfZ, const glm::dmat3& axes = glm::dmat3(1.0));
 // Capped cylinder standing on y = yBase (axis through (axisX, axisZ)).
 Solid cylinderSolid(double axisX, double axisZ, double yBase, double radius, double height);
 // Thick-walled tube (outer radius, inner radius, height) standing on y = yBase; with bottomThickness

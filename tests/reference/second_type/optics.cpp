@@ -89,14 +89,22 @@ SurfaceHit intersectSolid(const Solid& s, const Vec3& o, const Vec3& d, double t
     return {};
 }
 
-double dielectricReflectance(double cosI, double n1, double n2) {
+void dielectricReflectances(double cosI, double n1, double n2, double& rs, double& rp) {
     cosI = std::clamp(cosI, 0.0, 1.0);
     double sinT = n1 / n2 * std::sqrt(std::max(0.0, 1.0 - cosI * cosI));
-    if (sinT >= 1.0) return 1.0;
+    rs = rp = 1.0;
+    if (sinT >= 1.0) return;
     double cosT = std::sqrt(1.0 - sinT * sinT);
-    double rs = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
-    double rp = (n1 * cosT - n2 * cosI) / (n1 * cosT + n2 * cosI);
-    return 0.5 * (rs * rs + rp * rp);
+    double as = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
+    double ap = (n1 * cosT - n2 * cosI) / (n1 * cosT + n2 * cosI);
+    rs = as * as;
+    rp = ap * ap;
+}
+
+double dielectricReflectance(double cosI, double n1, double n2) {
+    double rs, rp;
+    dielectricReflectances(cosI, n1, n2, rs, rp);
+    return 0.5 * (rs + rp);
 }
 
 bool refracted(const Vec3& d, const Vec3& nFacing, double n1, double n2, Vec3& out) {

@@ -14,8 +14,12 @@ struct SurfaceHit {
 // Nearest hit of the ray o + t d (|d| = 1) with the solid's boundary for t > tMin.
 SurfaceHit intersectSolid(const Solid& s, const Vec3& o, const Vec3& d, double tMin);
 
-// Unpolarised Fresnel reflectance of a smooth dielectric interface (Born & Wolf sec. 1.5.2):
-// cosI on the incident side, n1 incident and n2 transmitted index; 1 under total internal reflection.
+// s- and p-polarised Fresnel power reflectances of a smooth dielectric interface (Born & Wolf sec.
+// 1.5.2): cosI on the incident side, n1 incident and n2 transmitted index; both 1 under total internal
+// reflection.
+void dielectricReflectances(double cosI, double n1, double n2, double& rs, double& rp);
+
+// Their mean, the unpolarised reflectance.
 double dielectricReflectance(double cosI, double n1, double n2);
 
 // Refracted unit direction for unit d arriving at a surface with unit normal nFacing (dot(d, nFacing)

@@ -32,6 +32,21 @@ Rng pathRng(uint64_t seed, uint64_t stream, uint64_t index) {
     return r;
 }
 
+// A thin-walled pane, followed bounce by bounce (no closed form): one polarisation, s or p with
+// probability 1/2 (unpolarised light; parallel faces do not mix them), keeps its face reflectance r from
+// either side (Stokes r' = -r); the light reflects at the first face, or enters and bounces between the
+// faces until it leaves through one of them. True: it leaves on the side it came from.
+bool paneReflects(double cosI, double ior, Rng& rng) {
+    double rs, rp;
+    dielectricReflectances(cosI, 1.0, ior, rs, rp);
+    double r = rng.next() < 0.5 ? rs : rp;
+    if (rng.next() < r) return true;
+    for (;;) {
+        if (rng.next() >= r) return false;   // through the far face
+        if (rng.next() >= r) return true;    // back out through the near face
+    }
+}
+
 struct ChainEnd {
     bool onFloor = false;
     Vec3 position{0.0};
@@ -79,6 +94,8 @@ ChainEnd followChain(const Scene& scene, Vec3 o, Vec3 d, bool radiance, uint32_t
         Vec3 next = d + 2.0 * cosI * nFacing;   // mirror direction
         if (optic.kind == Optic::Kind::Conductor) {
             weight *= conductorReflectance(optic.f0, cosI);
+        } else if (optic.thinWalled) {
+            if (refractOnly || !paneReflects(cosI, optic.ior, rng)) next = d;   // air on both sides: no (n1/n2)^2
         } else {
             double n1 = entering ? 1.0 : optic.ior, n2 = entering ? optic.ior : 1.0;
             Vec3 t;

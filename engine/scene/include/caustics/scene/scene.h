@@ -33,6 +33,9 @@ struct Material {
     bool isSpecular() const {
         return roughness <= kSpecularRoughnessLimit && (metallic > 0.5f || transmission > 0.0f);
     }
+    // Thin-walled glass (glTF transmission without KHR_materials_volume): a pane of two parallel faces
+    // that does not bend light (docs/physics.md "Thin-walled glass"). Opaque surfaces have no second face.
+    bool isThinWalled() const { return transmission > 0.0f && thickness <= 0.0f; }
 };
 
 struct Texture {
