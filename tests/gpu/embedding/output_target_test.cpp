@@ -1,0 +1,354 @@
+// Caustics-only output into the host's own target (docs/embedding.md "Output target"): for every format
+// causticsOutputFormatSupported() accepts, Replace and Add (onto a host clear colour) give the module's
+// own RGBA32_FLOAT caustics of the same frame, read back beside it, within the format's precision; the
+// refusals name the field, the format and what is needed. The host clears its target in its own command
+// list and hands it over in CopyDest, so the module's barrier must order its draw after the clear
+// (synchronization validation is on).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "caustics/rhi/log.h"
+#include "caustics/scene/gpu_scene.h"
+#include "gpu_test.h"
+#include "module_frames.h"
+#include "spot_sphere_scene.h"
+
+namespace caustics::test {
+namespace {
+
+constexpr uint32_t kSize = 64;
+constexpr float kHostClear[4] = {0.25f, 0.5f, 0.125f, 0.75f};   // exact in every supported format's range
+
+CausticsSettings causticsOnlySettings() {
+    CausticsSettings s;
+    s.causticsOnly = true;
+    s.mapResolution = 64;
+    s.raysPerTexel = 2.0f;   // 8192 photons: a few ms on lavapipe
+    s.secondType = false;
+    s.filter = false;
+    s.maxStoredHits = 1u << 12;
+    s.framesInFlight = 1;
+    return s;
+}
+
+float halfToFloat(uint16_t h) {
+    const uint32_t e = (h >> 10) & 31u, m = h & 1023u;
+    const float mag = e == 0 ? std::ldexp(float(m), -24) : std::ldexp(float(m | 1024u), int(e) - 25);
+    return (h & 0x8000u) ? -mag : mag;
+}
+float srgbDecode(float e) { return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f); }
+float srgbEncode(float l) { return l <= 0.0031308f ? l * 12.92f : 1.055f * std::pow(l, 1.0f / 2.4f) - 0.055f; }
+
+// Texel i of a read-back image, channels RGBA, as the shader sees them (sRGB: still encoded).
+std::array<float, 4> texel(const std::vector<uint8_t>& bytes, rhi::Format format, size_t i) {
+    std::array<float, 4> v{};
+    switch (format) {
+        case rhi::Format::RGBA32_FLOAT: std::memcpy(v.data(), bytes.data() + 16 * i, 16); break;
+        case rhi::Format::RGBA16_FLOAT:
+            for (int c = 0; c < 4; ++c) {
+                uint16_t h;
+                std::memcpy(&h, bytes.data() + 8 * i + 2 * c, 2);
+                v[c] = halfToFloat(h);
+            }
+            break;
+        case rhi::Format::BGRA8_UNORM:
+            for (int c = 0; c < 4; ++c) v[c] = bytes[4 * i + (c == 3 ? 3 : 2 - c)] / 255.0f;
+            break;
+        default:   // RGBA8_UNORM, RGBA8_SRGB
+            for (int c = 0; c < 4; ++c) v[c] = bytes[4 * i + c] / 255.0f;
+    }
+    return v;
+}
+
+// What the target holds after the write: Replace stores the value, Add the host's value plus it, each
+// converted as the hardware does (unorm clamps to [0, 1]; sRGB blends in linear and encodes). `host` is
+// the linear clear value: an 8-bit target holds it rounded to a step (of its sRGB encoding), and the
+// blend reads that stored value back (decoded).
+float expectedStored(rhi::Format format, float value, float host, bool add) {
+    const bool srgb = format == rhi::Format::RGBA8_SRGB;
+    const bool unorm = srgb || format == rhi::Format::RGBA8_UNORM || format == rhi::Format::BGRA8_UNORM;
+    if (unorm) {
+        const float stored = std::round((srgb ? srgbEncode(host) : host) * 255.0f) / 255.0f;
+        host = srgb ? srgbDecode(stored) : stored;
+    }
+    float linear = (add ? host : 0.0f) + value;
+    if (unorm) linear = std::clamp(linear, 0.0f, 1.0f);
+    return srgb ? srgbEncode(linear) : linear;
+}
+
+// The error allowed between a stored value and expectedStored, from the format's precision:
+//  - RGBA32_FLOAT: the float product radiance x scale and one float add: 2 ulp (2^-22 relative);
+//  - RGBA16_FLOAT: one rounding to half on store (half ulp, 2^-11 relative) and, for Add, the host's
+//    half value (exact: kHostClear) plus the source rounded once more: 2^-10 relative, plus the
+//    smallest half normal (6.1e-5) for values rounded into the subnormal range;
+//  - 8-bit unorm and sRGB: one step (1/255): rounding to nearest is half a step, and Vulkan allows
+//    conversions to be off by up to 0.6 of a step (and sRGB encoding by a little more) before the store.
+float tolerance(rhi::Format format, float expected) {
+    switch (format) {
+        case rhi::Format::RGBA32_FLOAT: return std::ldexp(std::abs(expected), -22) + 1e-30f;
+        case rhi::Format::RGBA16_FLOAT: return std::ldexp(std::abs(expected), -10) + 6.1e-5f;
+        default: return 1.0f / 255.0f;
+    }
+}
+
+struct Frame {
+    std::vector<uint8_t> target;      // the host target after the frame (its format)
+    std::vector<glm::vec4> caustics;  // the module's RGBA32_FLOAT caustics of the same frame
+};
+
+class OutputTarget : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        scene_ = spotSphereScene();
+        auto gpuScene = scene::GpuScene::create(*device, scene_);
+        ASSERT_TRUE(gpuScene) << gpuScene.message();
+        gpuScene_ = std::make_unique<scene::GpuScene>(std::move(gpuScene.value()));
+        auto gbuffer = renderHostGBuffer();
+        ASSERT_TRUE(gbuffer) << gbuffer.message();
+        gbuffer_ = gbuffer.value();
+        auto module = CausticsModule::create(device, scene_, *gpuScene_, causticsOnlySettings());
+        ASSERT_TRUE(module) << module.message();
+        module_ = std::move(module.value());
+    }
+    void TearDown() override {
+        module_.reset();
+        GpuTest::TearDown();
+    }
+
+    // The host's G-buffer: our own G-buffer pass (a standalone module, caustics off), copied into
+    // textures the test owns, as an engine's G-buffer would be.
+    Result<HostGBuffer> renderHostGBuffer() {
+        CausticsSettings s;
+        s.causticsEnabled = false;
+        CAUSTICS_TRY(auto standalone, CausticsModule::create(device, scene_, *gpuScene_, s));
+        rg::RenderGraph graph;
+        FrameInputs in = viewOf(spotSphereCamera(), kSize).inputs;
+        CAUSTICS_TRY(FrameOutputs out, standalone->addPasses(graph, in));
+        HostGBuffer g;
+        const std::tuple<rhi::TextureHandle*, rg::RgTexture, rhi::Format, const char*> channels[] = {
+            {&g.normalRoughness, out.gbuffer.normalRoughness, GBufferFormats::kNormalRoughness, "host normalRoughness"},
+            {&g.albedoMetallic, out.gbuffer.albedoMetallic, GBufferFormats::kAlbedoMetallic, "host albedoMetallic"},
+            {&g.optics, out.gbuffer.optics, GBufferFormats::kOptics, "host optics"},
+            {&g.linearDepth, out.gbuffer.linearDepth, GBufferFormats::kLinearDepth, "host linearDepth"},
+            {&g.objectId, out.gbuffer.objectId, GBufferFormats::kObjectId, "host objectId"}};
+        for (const auto& [handle, source, format, name] : channels) {
+            CAUSTICS_TRY(*handle, device->createTexture(rhi::TextureDesc().setSize(kSize, kSize).setFormat(format)
+                                                            .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::CopyDest)
+                                                            .setDebugName(name)));
+            copyInto(graph, source, *handle, rhi::ResourceState::Undefined, rhi::ResourceState::ShaderResource);
+        }
+        CAUSTICS_TRY(rhi::CommandListHandle cmd, device->createCommandList());
+        cmd->begin();
+        Status st = graph.execute(*device, *cmd);
+        cmd->end();
+        CAUSTICS_CHECK(st);
+        CAUSTICS_TRY(uint64_t fence, device->submit(cmd));
+        CAUSTICS_CHECK(device->waitForFence(fence));
+        g.state = rhi::ResourceState::ShaderResource;
+        return g;
+    }
+
+    // A pass of the host's: copies `source` into its own texture `dst` (imported in `before`, left in `after`).
+    static void copyInto(rg::RenderGraph& graph, rg::RgTexture source, const rhi::TextureHandle& dst,
+                         rhi::ResourceState before, rhi::ResourceState after) {
+        rg::RgTexture imported = graph.importTexture(dst->desc().debugName, dst, before, after);
+        graph.addPass("host.copy " + dst->desc().debugName, [&](rg::PassBuilder& b) {
+            rg::RgTexture s = b.read(source, rg::Access::CopySource), d = b.write(imported, rg::Access::CopyDest);
+            const rhi::TextureRegion all = rhi::TextureRegion().setSize(kSize, kSize);
+            return [=](rg::PassContext& ctx) { ctx.cmd().copyTexture(ctx.texture(d), all, ctx.texture(s), all); };
+        });
+        graph.markOutput(imported);
+    }
+
+    // One caustics-only frame: the host clears `target` to kHostClear in its command list, then records
+    // the module's graph into the same list, handing the target over in CopyDest; the module's own
+    // caustics are copied out of the same graph.
+    Result<Frame> frame(const rhi::TextureHandle& target, OutputWrite write, float scale) {
+        CAUSTICS_TRY(rhi::TextureHandle reference,
+                     device->createTexture(rhi::TextureDesc().setSize(kSize, kSize).setFormat(rhi::Format::RGBA32_FLOAT)
+                                               .setUsage(rhi::TextureUsage::CopyDest | rhi::TextureUsage::CopySource)
+                                               .setDebugName("module caustics")));
+        rg::RenderGraph graph;
+        FrameInputs in = viewOf(spotSphereCamera(), kSize).inputs;
+        in.frameIndex = frameIndex_++;
+        in.hostGBuffer = gbuffer_;
+        in.outputTarget = target;
+        in.outputState = rhi::ResourceState::CopyDest;
+        in.outputWrite = write;
+        in.outputScale = scale;
+        CAUSTICS_TRY(FrameOutputs out, module_->addPasses(graph, in));
+        if (!out.caustics.valid()) return makeError("the frame has no caustics");
+        copyInto(graph, out.caustics, reference, rhi::ResourceState::Undefined, rhi::ResourceState::CopySource);
+        CAUSTICS_TRY(rhi::CommandListHandle cmd, device->createCommandList());
+        cmd->begin();
+        const rhi::TextureBarrier toClear{.texture = target, .before = rhi::ResourceState::Undefined,
+                                          .after = rhi::ResourceState::CopyDest};
+        cmd->barriers({&toClear, 1}, {});
+        cmd->clearTextureFloat(target, kHostClear);
+        Status st = graph.execute(*device, *cmd);
+        cmd->end();
+        CAUSTICS_CHECK(st);
+        CAUSTICS_TRY(uint64_t fence, device->submit(cmd));
+        CAUSTICS_CHECK(device->waitForFence(fence));
+        Frame f;
+        f.target = readTexture(target, rhi::ResourceState::CopyDest);
+        const std::vector<uint8_t> c = readTexture(reference, rhi::ResourceState::CopySource);
+        f.caustics.resize(size_t(kSize) * kSize);
+        std::memcpy(f.caustics.data(), c.data(), std::min(c.size(), f.caustics.size() * sizeof(glm::vec4)));
+        return f;
+    }
+
+    Result<rhi::TextureHandle> hostTarget(rhi::Format format, rhi::TextureUsage usage = rhi::TextureUsage::RenderTarget |
+                                                                                     rhi::TextureUsage::CopyDest |
+                                                                                     rhi::TextureUsage::CopySource,
+                                          uint32_t size = kSize) {
+        return device->createTexture(rhi::TextureDesc().setSize(size, size).setFormat(format).setUsage(usage)
+                                         .setDebugName("host lighting"));
+    }
+
+    Status refusal(rhi::Format format, rhi::TextureUsage usage, uint32_t size, float scale = 1.0f) {
+        CAUSTICS_TRY(rhi::TextureHandle target, hostTarget(format, usage, size));
+        rg::RenderGraph graph;
+        FrameInputs in = viewOf(spotSphereCamera(), kSize).inputs;
+        in.hostGBuffer = gbuffer_;
+        in.outputTarget = target;
+        in.outputWrite = OutputWrite::Add;
+        in.outputScale = scale;
+        CAUSTICS_TRY(FrameOutputs out, module_->addPasses(graph, in));
+        (void)out;
+        return okStatus();
+    }
+
+    scene::Scene scene_;
+    std::unique_ptr<scene::GpuScene> gpuScene_;
+    HostGBuffer gbuffer_;
+    std::unique_ptr<CausticsModule> module_;
+    uint32_t frameIndex_ = 0;
+};
+
+using FormatAndWrite = std::tuple<rhi::Format, OutputWrite>;
+class OutputTargetFormat : public OutputTarget, public ::testing::WithParamInterface<FormatAndWrite> {};
+
+// The scale puts the brightest caustic pixel at 0.8 (a calibration frame into RGBA32_FLOAT), so that
+// unorm targets hold it unclamped and the Add onto 0.5 clamps the brightest pixels (tested as clamped).
+TEST_P(OutputTargetFormat, CausticsOnlyOutputEqualsTheModulesCausticsWithinTheFormatsPrecision) {
+    const auto [format, write] = GetParam();
+    const bool add = write == OutputWrite::Add;
+    auto calibration = hostTarget(rhi::Format::RGBA32_FLOAT);
+    ASSERT_TRUE(calibration) << calibration.message();
+    auto first = frame(calibration.value(), OutputWrite::Replace, 1.0f);
+    ASSERT_TRUE(first) << first.message();
+    float peak = 0.0f;
+    for (const glm::vec4& c : first.value().caustics) peak = std::max({peak, c.r, c.g, c.b});
+    ASSERT_GT(peak, 0.0f) << "no caustic in the image";
+    const float scale = 0.8f / peak;
+
+    auto target = hostTarget(format);
+    ASSERT_TRUE(target) << target.message();
+    auto f = frame(target.value(), write, scale);
+    ASSERT_TRUE(f) << f.message();
+    double worst = 0.0;   // in units of the tolerance
+    size_t lit = 0, bad = 0;
+    const std::vector<uint8_t>& stored = f.value().target;
+    for (size_t i = 0; i < f.value().caustics.size(); ++i) {
+        const glm::vec4 c = f.value().caustics[i];
+        const std::array<float, 4> got = texel(stored, format, i);
+        if (std::max({c.r, c.g, c.b}) > 0.0f) ++lit;
+        for (int ch = 0; ch < 4; ++ch) {
+            const float expected = ch == 3 ? (add ? kHostClear[3] : 1.0f)
+                                           : expectedStored(format, c[ch] * scale, kHostClear[ch], add);
+            const float tol = tolerance(format, expected);
+            const double err = std::abs(double(got[ch]) - expected);
+            worst = std::max(worst, err / tol);
+            if (err > tol && ++bad <= 5)
+                ADD_FAILURE() << "pixel " << i << " channel " << ch << ": stored " << got[ch] << ", expected " << expected
+                              << " (caustics " << c[ch] << " x " << scale << ", tolerance " << tol << ")";
+        }
+    }
+    std::printf("[ measured ] %s %s: %zu lit pixels, worst error %.3g of the tolerance\n", rhi::formatInfo(format).name,
+                outputWriteName(write), lit, worst);
+    EXPECT_GT(lit, size_t(kSize));   // a caustic, not a black frame compared with a black frame
+    EXPECT_EQ(bad, 0u);
+}
+
+const FormatAndWrite kFormatsAndWrites[] = {
+    {rhi::Format::RGBA8_UNORM, OutputWrite::Replace},  {rhi::Format::RGBA8_UNORM, OutputWrite::Add},
+    {rhi::Format::RGBA8_SRGB, OutputWrite::Replace},   {rhi::Format::RGBA8_SRGB, OutputWrite::Add},
+    {rhi::Format::BGRA8_UNORM, OutputWrite::Replace},  {rhi::Format::BGRA8_UNORM, OutputWrite::Add},
+    {rhi::Format::RGBA16_FLOAT, OutputWrite::Replace}, {rhi::Format::RGBA16_FLOAT, OutputWrite::Add},
+    {rhi::Format::RGBA32_FLOAT, OutputWrite::Replace}, {rhi::Format::RGBA32_FLOAT, OutputWrite::Add},
+};
+
+INSTANTIATE_TEST_SUITE_P(EveryFormat, OutputTargetFormat, ::testing::ValuesIn(kFormatsAndWrites),
+                         [](const ::testing::TestParamInfo<FormatAndWrite>& info) {
+                             return std::string(rhi::formatInfo(std::get<0>(info.param)).name) + "_" +
+                                    outputWriteName(std::get<1>(info.param));
+                         });
+
+// Every format the RHI offers is either tested above or refused by name.
+TEST(OutputTargetFormats, EverySupportedFormatIsTestedAndNoOther) {
+    int supported = 0;
+    for (uint32_t f = 0; f <= uint32_t(rhi::Format::D24_UNORM_S8_UINT); ++f) {
+        const rhi::Format format = rhi::Format(f);
+        const bool tested = std::any_of(std::begin(kFormatsAndWrites), std::end(kFormatsAndWrites),
+                                        [&](const FormatAndWrite& p) { return std::get<0>(p) == format; });
+        EXPECT_EQ(causticsOutputFormatSupported(format), tested) << rhi::formatInfo(format).name;
+        supported += causticsOutputFormatSupported(format) ? 1 : 0;
+    }
+    EXPECT_EQ(supported, 5);
+}
+
+TEST_F(OutputTarget, IntegerFormatIsRefusedNamingTheFieldTheFormatAndWhatIsNeeded) {
+    Status st = refusal(rhi::Format::RGBA32_UINT, rhi::TextureUsage::RenderTarget, kSize);
+    ASSERT_FALSE(st.ok());
+    for (const char* part : {"outputTarget 'host lighting'", "RGBA32_UINT", "integer", "float or unorm colour format"})
+        EXPECT_NE(st.message().find(part), std::string::npos) << part << " in: " << st.message();
+}
+
+TEST_F(OutputTarget, DepthFormatIsRefused) {
+    Status st = refusal(rhi::Format::D32_FLOAT, rhi::TextureUsage::DepthStencil, kSize);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.message().find("D32_FLOAT"), std::string::npos) << st.message();
+    EXPECT_NE(st.message().find("depth format"), std::string::npos) << st.message();
+}
+
+TEST_F(OutputTarget, TwoChannelFormatIsRefusedRatherThanDroppingBlue) {
+    Status st = refusal(rhi::Format::RG16_FLOAT, rhi::TextureUsage::RenderTarget, kSize);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.message().find("RG16_FLOAT"), std::string::npos) << st.message();
+    EXPECT_NE(st.message().find("fewer than three channels"), std::string::npos) << st.message();
+}
+
+TEST_F(OutputTarget, TargetWithoutRenderTargetUsageIsRefused) {
+    Status st = refusal(rhi::Format::RGBA16_FLOAT, rhi::TextureUsage::Storage | rhi::TextureUsage::Sampled, kSize);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.message().find("RGBA16_FLOAT"), std::string::npos) << st.message();
+    EXPECT_NE(st.message().find("lacks RenderTarget usage"), std::string::npos) << st.message();
+}
+
+TEST_F(OutputTarget, TargetOfAnotherSizeIsRefusedWithBothSizes) {
+    Status st = refusal(rhi::Format::RGBA16_FLOAT, rhi::TextureUsage::RenderTarget, kSize / 2);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.message().find("is 32x32, the image (FrameInputs::width x height) is 64x64"), std::string::npos)
+        << st.message();
+}
+
+TEST_F(OutputTarget, NegativeOrNonFiniteScaleIsRefused) {
+    for (float scale : {-1.0f, std::nanf("")}) {
+        Status st = refusal(rhi::Format::RGBA16_FLOAT, rhi::TextureUsage::RenderTarget, kSize, scale);
+        ASSERT_FALSE(st.ok());
+        EXPECT_NE(st.message().find("outputScale"), std::string::npos) << st.message();
+    }
+}
+
+}  // namespace
+}  // namespace caustics::test
