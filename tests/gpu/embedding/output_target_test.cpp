@@ -186,8 +186,8 @@ protected:
         in.outputWrite = write;
         in.outputScale = scale;
         CAUSTICS_TRY(FrameOutputs out, module_->addPasses(graph, in));
-        if (!out.caustics.valid()) return makeError("the frame has no caustics");
-        copyInto(graph, out.caustics, reference, rhi::ResourceState::Undefined, rhi::ResourceState::CopySource);
+        if (out.caustics.valid())
+            copyInto(graph, out.caustics, reference, rhi::ResourceState::Undefined, rhi::ResourceState::CopySource);
         CAUSTICS_TRY(rhi::CommandListHandle cmd, device->createCommandList());
         cmd->begin();
         const rhi::TextureBarrier toClear{.texture = target, .before = rhi::ResourceState::Undefined,
@@ -201,9 +201,11 @@ protected:
         CAUSTICS_CHECK(device->waitForFence(fence));
         Frame f;
         f.target = readTexture(target, rhi::ResourceState::CopyDest);
-        const std::vector<uint8_t> c = readTexture(reference, rhi::ResourceState::CopySource);
-        f.caustics.resize(size_t(kSize) * kSize);
-        std::memcpy(f.caustics.data(), c.data(), std::min(c.size(), f.caustics.size() * sizeof(glm::vec4)));
+        if (out.caustics.valid()) {
+            const std::vector<uint8_t> c = readTexture(reference, rhi::ResourceState::CopySource);
+            f.caustics.resize(size_t(kSize) * kSize);
+            std::memcpy(f.caustics.data(), c.data(), std::min(c.size(), f.caustics.size() * sizeof(glm::vec4)));
+        }
         return f;
     }
 
@@ -305,6 +307,103 @@ TEST(OutputTargetFormats, EverySupportedFormatIsTestedAndNoOther) {
         supported += causticsOutputFormatSupported(format) ? 1 : 0;
     }
     EXPECT_EQ(supported, 5);
+}
+
+// Caustics switched off (or no light): Replace leaves zero radiance (alpha 1), Add leaves the host's
+// image as it was. RGBA16_FLOAT holds kHostClear exactly, so both compare exactly.
+TEST_F(OutputTarget, WithoutCausticsReplaceClearsTheTargetAndAddLeavesIt) {
+    CausticsSettings off = causticsOnlySettings();
+    off.causticsEnabled = false;
+    ASSERT_TRUE(module_->setSettings(off).ok());
+    auto target = hostTarget(rhi::Format::RGBA16_FLOAT);
+    ASSERT_TRUE(target) << target.message();
+    for (OutputWrite write : {OutputWrite::Replace, OutputWrite::Add}) {
+        auto f = frame(target.value(), write, 1.0f);
+        ASSERT_TRUE(f) << f.message();
+        size_t differing = 0;
+        for (size_t i = 0; i < size_t(kSize) * kSize; ++i) {
+            const std::array<float, 4> got = texel(f.value().target, rhi::Format::RGBA16_FLOAT, i);
+            for (int ch = 0; ch < 4; ++ch) {
+                const float expected = write == OutputWrite::Add ? kHostClear[ch] : (ch == 3 ? 1.0f : 0.0f);
+                differing += got[ch] != expected ? 1 : 0;
+            }
+        }
+        EXPECT_EQ(differing, 0u) << outputWriteName(write);
+    }
+}
+
+// Outside caustics-only mode the target takes the display image (RGBA8_UNORM, Storage). The host need
+// not mark it as an output: the module keeps the passes that write it (they used to be culled without
+// a word, the target left as it was). Same frame, same seed: the bytes equal the display transient's.
+TEST_F(OutputTarget, DisplayIntoHostTargetEqualsTheDisplayImageWithoutMarkingIt) {
+    CausticsSettings s;
+    s.causticsEnabled = false;   // direct light alone: the display path is what is tested
+    auto standalone = CausticsModule::create(device, scene_, *gpuScene_, s);
+    ASSERT_TRUE(standalone) << standalone.message();
+    auto run = [&](const rhi::TextureHandle& target, const rhi::TextureHandle& copy) -> Status {
+        rg::RenderGraph graph;
+        FrameInputs in = viewOf(spotSphereCamera(), kSize).inputs;
+        in.outputTarget = target;
+        in.outputState = rhi::ResourceState::CopySource;
+        CAUSTICS_TRY(FrameOutputs out, standalone.value()->addPasses(graph, in));
+        if (copy) copyInto(graph, out.display, copy, rhi::ResourceState::Undefined, rhi::ResourceState::CopySource);
+        CAUSTICS_TRY(rhi::CommandListHandle cmd, device->createCommandList());
+        cmd->begin();
+        if (target) {
+            const rhi::TextureBarrier toClear{.texture = target, .before = rhi::ResourceState::Undefined,
+                                              .after = rhi::ResourceState::CopyDest};
+            cmd->barrier(toClear);
+            cmd->clearTextureFloat(target, kHostClear);
+            const rhi::TextureBarrier toSource{.texture = target, .before = rhi::ResourceState::CopyDest,
+                                               .after = rhi::ResourceState::CopySource};
+            cmd->barrier(toSource);
+        }
+        Status st = graph.execute(*device, *cmd);
+        cmd->end();
+        CAUSTICS_CHECK(st);
+        CAUSTICS_TRY(uint64_t fence, device->submit(cmd));
+        return device->waitForFence(fence);
+    };
+    const rhi::TextureUsage usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopyDest | rhi::TextureUsage::CopySource;
+    auto display = hostTarget(rhi::Format::RGBA8_UNORM, rhi::TextureUsage::CopyDest | rhi::TextureUsage::CopySource);
+    auto target = hostTarget(rhi::Format::RGBA8_UNORM, usage);
+    ASSERT_TRUE(display && target);
+    ASSERT_TRUE(run(nullptr, display.value()).ok());
+    Status st = run(target.value(), nullptr);
+    ASSERT_TRUE(st.ok()) << st.message();
+    const std::vector<uint8_t> expected = readTexture(display.value(), rhi::ResourceState::CopySource);
+    const std::vector<uint8_t> got = readTexture(target.value(), rhi::ResourceState::CopySource);
+    ASSERT_EQ(got.size(), expected.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < got.size(); ++i) differing += got[i] != expected[i] ? 1 : 0;
+    EXPECT_EQ(differing, 0u);
+}
+
+// The display path stores RGBA8 through a storage image and replaces the target: another format, or
+// Add, is refused naming what it needs and where the other formats go.
+TEST_F(OutputTarget, DisplayPathRefusesOtherFormatsAndAdd) {
+    CausticsSettings s;
+    s.causticsEnabled = false;
+    auto standalone = CausticsModule::create(device, scene_, *gpuScene_, s);
+    ASSERT_TRUE(standalone) << standalone.message();
+    auto attempt = [&](rhi::Format format, OutputWrite write) -> Status {
+        CAUSTICS_TRY(rhi::TextureHandle target, hostTarget(format, rhi::TextureUsage::Storage | rhi::TextureUsage::RenderTarget));
+        rg::RenderGraph graph;
+        FrameInputs in = viewOf(spotSphereCamera(), kSize).inputs;
+        in.outputTarget = target;
+        in.outputWrite = write;
+        CAUSTICS_TRY(FrameOutputs out, standalone.value()->addPasses(graph, in));
+        (void)out;
+        return okStatus();
+    };
+    Status half = attempt(rhi::Format::RGBA16_FLOAT, OutputWrite::Replace);
+    ASSERT_FALSE(half.ok());
+    EXPECT_NE(half.message().find("outputTarget 'host lighting' (RGBA16_FLOAT, 64x64)"), std::string::npos) << half.message();
+    EXPECT_NE(half.message().find("RGBA8_UNORM with Storage usage"), std::string::npos) << half.message();
+    EXPECT_NE(half.message().find("settings.causticsOnly"), std::string::npos) << half.message();
+    Status add = attempt(rhi::Format::RGBA8_UNORM, OutputWrite::Add);
+    ASSERT_FALSE(add.ok());
+    EXPECT_NE(add.message().find("outputWrite Add"), std::string::npos) << add.message();
 }
 
 TEST_F(OutputTarget, IntegerFormatIsRefusedNamingTheFieldTheFormatAndWhatIsNeeded) {
