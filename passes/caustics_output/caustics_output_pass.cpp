@@ -24,7 +24,9 @@ bool causticsOutputFormatSupported(rhi::Format format) {
         case rhi::Format::RGBA8_SRGB:
         case rhi::Format::BGRA8_UNORM:
         case rhi::Format::RGBA16_FLOAT:
-        case rhi::Format::RGBA32_FLOAT: return true;
+        case rhi::Format::RGBA32_FLOAT:
+        case rhi::Format::R11G11B10_FLOAT:
+        case rhi::Format::RGB10A2_UNORM: return true;
         default: return false;
     }
 }
@@ -39,7 +41,8 @@ Status checkCausticsOutputTarget(const rhi::TextureDesc& desc, uint32_t width, u
                           : desc.format == rhi::Format::RGB32_FLOAT ? "a vertex format"
                                                                     : "fewer than three channels (green and blue would be dropped)";
         return makeError(what + " is " + why + ": caustics-only output needs a float or unorm colour format with "
-                         "three or four channels: RGBA8_UNORM, RGBA8_SRGB, BGRA8_UNORM, RGBA16_FLOAT or RGBA32_FLOAT");
+                         "three or four channels: RGBA8_UNORM, RGBA8_SRGB, BGRA8_UNORM, RGB10A2_UNORM, RGBA16_FLOAT, "
+                         "R11G11B10_FLOAT or RGBA32_FLOAT");
     }
     if (!rhi::hasAny(desc.usage, rhi::TextureUsage::RenderTarget))
         return makeError(what + " lacks RenderTarget usage: the caustics are drawn into it as a colour attachment");

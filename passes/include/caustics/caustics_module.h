@@ -11,11 +11,12 @@
 //   graph.passTimeMs("direct_lighting")           // per-pass GPU medians come from the graph
 //
 // Pass names: view.begin, scene.update, gbuffer (or gbuffer.object_ids for a host G-buffer with an id
-// map), direct_lighting, caustics.* (caustic_passes.h),
-// composite. The scene is read every frame: instances, lights and materials may change between
-// frames (live_scene.h). A host G-buffer (caustics/gbuffer.h contract) replaces our G-buffer pass; a
-// host output target receives the display image instead of a transient, or, with settings.causticsOnly
-// (compositing left to the host), the caustics replaced into or added onto it (FrameInputs::outputWrite).
+// map), direct_lighting, caustics.* (caustic_passes.h), composite (caustics.output instead in
+// caustics-only mode with an outputTarget). The scene is read every frame: instances, lights and
+// materials may change between frames (live_scene.h). A host G-buffer (caustics/gbuffer.h contract)
+// replaces our G-buffer pass; a host output target receives the display image instead of a transient,
+// or, with settings.causticsOnly (compositing left to the host), the caustics replaced into or added
+// onto it (FrameInputs::outputWrite).
 #include <memory>
 #include <optional>
 

@@ -16,7 +16,8 @@ enum class OutputWrite : uint8_t {
 const char* outputWriteName(OutputWrite write);
 
 // Formats the caustics-only output draws into: every float or unorm colour format of rhi::Format with
-// three or four channels (RGBA8_UNORM, RGBA8_SRGB, BGRA8_UNORM, RGBA16_FLOAT, RGBA32_FLOAT). Refused:
+// three or four channels (RGBA8_UNORM, RGBA8_SRGB, BGRA8_UNORM, RGB10A2_UNORM, RGBA16_FLOAT,
+// R11G11B10_FLOAT, RGBA32_FLOAT). Refused:
 // integer and depth formats (no blending, no colour), one- and two-channel formats (they would drop
 // green and blue without a word) and RGB32_FLOAT (vertex data only). RGBA8_SRGB is accepted: the
 // hardware encodes on store and blends in linear, so the stored value is the sRGB encoding of the

@@ -25,7 +25,7 @@ namespace caustics::test {
 namespace {
 
 constexpr uint32_t kSize = 64;
-constexpr float kHostClear[4] = {0.25f, 0.5f, 0.125f, 0.75f};   // exact in every supported format's range
+constexpr float kHostClear[4] = {0.25f, 0.5f, 0.125f, 0.75f};   // exact in the float formats (unorm: rounded)
 
 CausticsSettings causticsOnlySettings() {
     CausticsSettings s;
@@ -62,6 +62,19 @@ std::array<float, 4> texel(const std::vector<uint8_t>& bytes, rhi::Format format
         case rhi::Format::BGRA8_UNORM:
             for (int c = 0; c < 4; ++c) v[c] = bytes[4 * i + (c == 3 ? 3 : 2 - c)] / 255.0f;
             break;
+        case rhi::Format::RGB10A2_UNORM: {
+            uint32_t p;
+            std::memcpy(&p, bytes.data() + 4 * i, 4);
+            v = {(p & 1023u) / 1023.0f, (p >> 10 & 1023u) / 1023.0f, (p >> 20 & 1023u) / 1023.0f, (p >> 30) / 3.0f};
+            break;
+        }
+        case rhi::Format::R11G11B10_FLOAT: {   // the half's exponent and top mantissa bits, unsigned
+            uint32_t p;
+            std::memcpy(&p, bytes.data() + 4 * i, 4);
+            v = {halfToFloat(uint16_t((p & 0x7FFu) << 4)), halfToFloat(uint16_t((p >> 11 & 0x7FFu) << 4)),
+                 halfToFloat(uint16_t((p >> 22) << 5)), 1.0f};   // no alpha: read as 1
+            break;
+        }
         default:   // RGBA8_UNORM, RGBA8_SRGB
             for (int c = 0; c < 4; ++c) v[c] = bytes[4 * i + c] / 255.0f;
     }
@@ -72,11 +85,21 @@ std::array<float, 4> texel(const std::vector<uint8_t>& bytes, rhi::Format format
 // converted as the hardware does (unorm clamps to [0, 1]; sRGB blends in linear and encodes). `host` is
 // the linear clear value: an 8-bit target holds it rounded to a step (of its sRGB encoding), and the
 // blend reads that stored value back (decoded).
-float expectedStored(rhi::Format format, float value, float host, bool add) {
-    const bool srgb = format == rhi::Format::RGBA8_SRGB;
-    const bool unorm = srgb || format == rhi::Format::RGBA8_UNORM || format == rhi::Format::BGRA8_UNORM;
+// Steps of a unorm channel (0: a float channel): 8-bit 255, RGB10A2 1023 for colour and 3 for alpha.
+float unormSteps(rhi::Format format, int channel) {
+    switch (format) {
+        case rhi::Format::RGBA8_UNORM: case rhi::Format::RGBA8_SRGB: case rhi::Format::BGRA8_UNORM: return 255.0f;
+        case rhi::Format::RGB10A2_UNORM: return channel == 3 ? 3.0f : 1023.0f;
+        default: return 0.0f;
+    }
+}
+
+float expectedStored(rhi::Format format, int channel, float value, float host, bool add) {
+    const bool srgb = format == rhi::Format::RGBA8_SRGB && channel < 3;
+    const float steps = unormSteps(format, channel);
+    const bool unorm = steps > 0.0f;
     if (unorm) {
-        const float stored = std::round((srgb ? srgbEncode(host) : host) * 255.0f) / 255.0f;
+        const float stored = std::round((srgb ? srgbEncode(host) : host) * steps) / steps;
         host = srgb ? srgbDecode(stored) : stored;
     }
     float linear = (add ? host : 0.0f) + value;
@@ -84,18 +107,23 @@ float expectedStored(rhi::Format format, float value, float host, bool add) {
     return srgb ? srgbEncode(linear) : linear;
 }
 
-// The error allowed between a stored value and expectedStored, from the format's precision:
+// The error allowed between a stored value and expectedStored, from the format's precision. Vulkan
+// leaves the rounding of float -> unorm and float -> small-float conversions to the implementation
+// (nearest: half a step; toward zero: under one), so the bound is one step (ulp) of the stored value:
 //  - RGBA32_FLOAT: the float product radiance x scale and one float add: 2 ulp (2^-22 relative);
-//  - RGBA16_FLOAT: one rounding to half on store (half ulp, 2^-11 relative) and, for Add, the host's
-//    half value (exact: kHostClear) plus the source rounded once more: 2^-10 relative, plus the
-//    smallest half normal (6.1e-5) for values rounded into the subnormal range;
-//  - 8-bit unorm and sRGB: one step (1/255): rounding to nearest is half a step, and Vulkan allows
-//    conversions to be off by up to 0.6 of a step (and sRGB encoding by a little more) before the store.
-float tolerance(rhi::Format format, float expected) {
+//  - RGBA16_FLOAT: one ulp of a half, 2^-10 relative (the host's clear value is exact in half, the
+//    blend rounds once), plus the smallest half normal (6.1e-5) for values in the subnormal range;
+//  - R11G11B10_FLOAT: the same with 6 mantissa bits (red, green: 2^-6 relative) and 5 (blue: 2^-5);
+//  - 8-bit unorm and sRGB: one step, 1/255 (sRGB compared encoded, as stored);
+//  - RGB10A2_UNORM: one step, 1/1023 (alpha: 1/3).
+// Measured on lavapipe: 0 (RGBA32_FLOAT), 0.50 (8-bit unorm), 0.65-0.85 (sRGB), 0.59-0.88 (RGBA16_FLOAT),
+// 0.84-0.97 (R11G11B10_FLOAT), 0.84-0.98 (RGB10A2_UNORM) of the bound: it rounds some of these toward zero.
+float tolerance(rhi::Format format, int channel, float expected) {
     switch (format) {
         case rhi::Format::RGBA32_FLOAT: return std::ldexp(std::abs(expected), -22) + 1e-30f;
         case rhi::Format::RGBA16_FLOAT: return std::ldexp(std::abs(expected), -10) + 6.1e-5f;
-        default: return 1.0f / 255.0f;
+        case rhi::Format::R11G11B10_FLOAT: return std::ldexp(std::abs(expected), channel == 2 ? -5 : -6) + 6.1e-5f;
+        default: return 1.0f / unormSteps(format, channel);
     }
 }
 
@@ -266,9 +294,11 @@ TEST_P(OutputTargetFormat, CausticsOnlyOutputEqualsTheModulesCausticsWithinTheFo
         const std::array<float, 4> got = texel(stored, format, i);
         if (std::max({c.r, c.g, c.b}) > 0.0f) ++lit;
         for (int ch = 0; ch < 4; ++ch) {
-            const float expected = ch == 3 ? (add ? kHostClear[3] : 1.0f)
-                                           : expectedStored(format, c[ch] * scale, kHostClear[ch], add);
-            const float tol = tolerance(format, expected);
+            // Alpha: Replace writes 1, Add keeps the host's (R11G11B10_FLOAT has none: read as 1).
+            const float expected = format == rhi::Format::R11G11B10_FLOAT && ch == 3 ? 1.0f
+                                   : ch == 3 ? expectedStored(format, ch, add ? 0.0f : 1.0f, kHostClear[3], add)
+                                             : expectedStored(format, ch, c[ch] * scale, kHostClear[ch], add);
+            const float tol = tolerance(format, ch, expected);
             const double err = std::abs(double(got[ch]) - expected);
             worst = std::max(worst, err / tol);
             if (err > tol && ++bad <= 5)
@@ -288,6 +318,8 @@ const FormatAndWrite kFormatsAndWrites[] = {
     {rhi::Format::BGRA8_UNORM, OutputWrite::Replace},  {rhi::Format::BGRA8_UNORM, OutputWrite::Add},
     {rhi::Format::RGBA16_FLOAT, OutputWrite::Replace}, {rhi::Format::RGBA16_FLOAT, OutputWrite::Add},
     {rhi::Format::RGBA32_FLOAT, OutputWrite::Replace}, {rhi::Format::RGBA32_FLOAT, OutputWrite::Add},
+    {rhi::Format::R11G11B10_FLOAT, OutputWrite::Replace}, {rhi::Format::R11G11B10_FLOAT, OutputWrite::Add},
+    {rhi::Format::RGB10A2_UNORM, OutputWrite::Replace}, {rhi::Format::RGB10A2_UNORM, OutputWrite::Add},
 };
 
 INSTANTIATE_TEST_SUITE_P(EveryFormat, OutputTargetFormat, ::testing::ValuesIn(kFormatsAndWrites),
@@ -299,14 +331,14 @@ INSTANTIATE_TEST_SUITE_P(EveryFormat, OutputTargetFormat, ::testing::ValuesIn(kF
 // Every format the RHI offers is either tested above or refused by name.
 TEST(OutputTargetFormats, EverySupportedFormatIsTestedAndNoOther) {
     int supported = 0;
-    for (uint32_t f = 0; f <= uint32_t(rhi::Format::D24_UNORM_S8_UINT); ++f) {
+    for (uint32_t f = 0; f <= uint32_t(rhi::kLastFormat); ++f) {
         const rhi::Format format = rhi::Format(f);
         const bool tested = std::any_of(std::begin(kFormatsAndWrites), std::end(kFormatsAndWrites),
                                         [&](const FormatAndWrite& p) { return std::get<0>(p) == format; });
         EXPECT_EQ(causticsOutputFormatSupported(format), tested) << rhi::formatInfo(format).name;
         supported += causticsOutputFormatSupported(format) ? 1 : 0;
     }
-    EXPECT_EQ(supported, 5);
+    EXPECT_EQ(supported, 7);
 }
 
 // Caustics switched off (or no light): Replace leaves zero radiance (alpha 1), Add leaves the host's
