@@ -200,7 +200,9 @@ protected:
     // One caustics-only frame: the host clears `target` to kHostClear in its command list, then records
     // the module's graph into the same list, handing the target over in CopyDest; the module's own
     // caustics are copied out of the same graph.
-    Result<Frame> frame(const rhi::TextureHandle& target, OutputWrite write, float scale) {
+    // handOver RenderTarget: the host clears it with a render pass of its own instead (its lighting pass).
+    Result<Frame> frame(const rhi::TextureHandle& target, OutputWrite write, float scale,
+                        rhi::ResourceState handOver = rhi::ResourceState::CopyDest) {
         CAUSTICS_TRY(rhi::TextureHandle reference,
                      device->createTexture(rhi::TextureDesc().setSize(kSize, kSize).setFormat(rhi::Format::RGBA32_FLOAT)
                                                .setUsage(rhi::TextureUsage::CopyDest | rhi::TextureUsage::CopySource)
@@ -210,7 +212,7 @@ protected:
         in.frameIndex = frameIndex_++;
         in.hostGBuffer = gbuffer_;
         in.outputTarget = target;
-        in.outputState = rhi::ResourceState::CopyDest;
+        in.outputState = handOver;
         in.outputWrite = write;
         in.outputScale = scale;
         CAUSTICS_TRY(FrameOutputs out, module_->addPasses(graph, in));
@@ -219,16 +221,28 @@ protected:
         CAUSTICS_TRY(rhi::CommandListHandle cmd, device->createCommandList());
         cmd->begin();
         const rhi::TextureBarrier toClear{.texture = target, .before = rhi::ResourceState::Undefined,
-                                          .after = rhi::ResourceState::CopyDest};
-        cmd->barriers({&toClear, 1}, {});
-        cmd->clearTextureFloat(target, kHostClear);
+                                          .after = handOver};
+        cmd->barrier(toClear);
+        if (handOver == rhi::ResourceState::RenderTarget) {
+            rhi::RenderingDesc pass;
+            pass.width = pass.height = kSize;
+            rhi::ColorAttachment a;
+            a.texture = target;
+            a.clear = true;
+            std::copy(std::begin(kHostClear), std::end(kHostClear), a.clearValue);
+            pass.colors.push_back(a);
+            cmd->beginRendering(pass);
+            cmd->endRendering();
+        } else {
+            cmd->clearTextureFloat(target, kHostClear);
+        }
         Status st = graph.execute(*device, *cmd);
         cmd->end();
         CAUSTICS_CHECK(st);
         CAUSTICS_TRY(uint64_t fence, device->submit(cmd));
         CAUSTICS_CHECK(device->waitForFence(fence));
         Frame f;
-        f.target = readTexture(target, rhi::ResourceState::CopyDest);
+        f.target = readTexture(target, handOver);
         if (out.caustics.valid()) {
             const std::vector<uint8_t> c = readTexture(reference, rhi::ResourceState::CopySource);
             f.caustics.resize(size_t(kSize) * kSize);
@@ -339,6 +353,24 @@ TEST(OutputTargetFormats, EverySupportedFormatIsTestedAndNoOther) {
         supported += causticsOutputFormatSupported(format) ? 1 : 0;
     }
     EXPECT_EQ(supported, 7);
+}
+
+// The usual host: its lighting pass leaves the target a colour attachment (RenderTarget) in the same
+// command buffer, and the module adds onto it. The graph's barrier orders the blend after the host's
+// render pass (synchronization validation is on); RGBA32_FLOAT: host + caustics x scale within 2 ulp.
+TEST_F(OutputTarget, AddAfterTheHostsOwnRenderPassInRenderTargetState) {
+    auto target = hostTarget(rhi::Format::RGBA32_FLOAT);
+    ASSERT_TRUE(target) << target.message();
+    auto f = frame(target.value(), OutputWrite::Add, 2.0f, rhi::ResourceState::RenderTarget);
+    ASSERT_TRUE(f) << f.message();
+    size_t bad = 0;
+    for (size_t i = 0; i < f.value().caustics.size(); ++i)
+        for (int ch = 0; ch < 4; ++ch) {
+            const float expected = kHostClear[ch] + (ch == 3 ? 0.0f : f.value().caustics[i][ch] * 2.0f);
+            const float got = texel(f.value().target, rhi::Format::RGBA32_FLOAT, i)[ch];
+            bad += std::abs(got - expected) > tolerance(rhi::Format::RGBA32_FLOAT, ch, expected) ? 1 : 0;
+        }
+    EXPECT_EQ(bad, 0u);
 }
 
 // Caustics switched off (or no light): Replace leaves zero radiance (alpha 1), Add leaves the host's
