@@ -12,49 +12,7 @@ namespace caustics {
 namespace {
 static_assert(sizeof(shader::CausticsOutputParams) == 8);
 const shader_bindings::PassBindings& kBindings = shader_bindings::kCausticsOutputBindings;
-
-std::string quoted(const rhi::TextureDesc& desc) { return desc.debugName.empty() ? "" : " '" + desc.debugName + "'"; }
 }  // namespace
-
-const char* outputWriteName(OutputWrite write) { return write == OutputWrite::Add ? "Add" : "Replace"; }
-
-bool causticsOutputFormatSupported(rhi::Format format) {
-    switch (format) {
-        case rhi::Format::RGBA8_UNORM:
-        case rhi::Format::RGBA8_SRGB:
-        case rhi::Format::BGRA8_UNORM:
-        case rhi::Format::RGBA16_FLOAT:
-        case rhi::Format::RGBA32_FLOAT:
-        case rhi::Format::R11G11B10_FLOAT:
-        case rhi::Format::RGB10A2_UNORM: return true;
-        default: return false;
-    }
-}
-
-Status checkCausticsOutputTarget(const rhi::TextureDesc& desc, uint32_t width, uint32_t height, const char* field) {
-    const std::string what = std::string("CausticsModule::addPasses: ") + field + quoted(desc) + " (" +
-                             rhi::formatInfo(desc.format).name + ")";
-    if (!causticsOutputFormatSupported(desc.format)) {
-        const rhi::FormatInfo& info = rhi::formatInfo(desc.format);
-        const char* why = info.isDepth     ? "a depth format"
-                          : info.isInteger ? "an integer format (no blending, no colour conversion)"
-                          : desc.format == rhi::Format::RGB32_FLOAT ? "a vertex format"
-                                                                    : "fewer than three channels (green and blue would be dropped)";
-        return makeError(what + " is " + why + ": caustics-only output needs a float or unorm colour format with "
-                         "three or four channels: RGBA8_UNORM, RGBA8_SRGB, BGRA8_UNORM, RGB10A2_UNORM, RGBA16_FLOAT, "
-                         "R11G11B10_FLOAT or RGBA32_FLOAT");
-    }
-    if (!rhi::hasAny(desc.usage, rhi::TextureUsage::RenderTarget))
-        return makeError(what + " lacks RenderTarget usage: the caustics are drawn into it as a colour attachment");
-    if (desc.dimension != rhi::TextureDimension::Texture2D || desc.arrayLayers != 1 || desc.mipLevels != 1)
-        return makeError(what + " must be a 2D texture of one layer and one mip level (it has " +
-                         std::to_string(desc.arrayLayers) + " layers, " + std::to_string(desc.mipLevels) + " mips)");
-    if (desc.width != width || desc.height != height)
-        return makeError(what + " is " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
-                         ", the image (FrameInputs::width x height) is " + std::to_string(width) + "x" +
-                         std::to_string(height));
-    return okStatus();
-}
 
 Result<CausticsOutputPass> CausticsOutputPass::create(rhi::IDevice& device) {
     CausticsOutputPass pass;

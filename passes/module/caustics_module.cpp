@@ -13,6 +13,7 @@
 #include "caustics_view.h"
 #include "host_gbuffer.h"
 #include "live_scene.h"
+#include "output_target_check.h"
 
 namespace caustics {
 
@@ -153,33 +154,6 @@ void expectSomeOutputRead(rg::RenderGraph& graph, const FrameOutputs& out) {
     graph.expectConsumer({out.display, out.hdr, out.direct, out.caustics, out.firstType, out.secondType, g.linearDepth,
                           g.objectId, g.normalRoughness, g.albedoMetallic, g.optics, g.depth},
                          "CausticsModule::addPasses (FrameOutputs)");
-}
-
-// FrameInputs::outputTarget and its write mode, before any pass is declared (docs/embedding.md "Output
-// target"): caustics-only draws into any supported colour format; the display path stores RGBA8.
-Status checkOutputTarget(const FrameInputs& in, bool causticsOnly) {
-    if (!in.outputTarget) return okStatus();
-    const rhi::TextureDesc& d = in.outputTarget->desc();
-    if (causticsOnly) {
-        if (!std::isfinite(in.outputScale) || in.outputScale < 0.0f)
-            return makeError("CausticsModule::addPasses: outputScale " + std::to_string(in.outputScale) +
-                             " must be finite and >= 0 (the host's exposure of outputTarget)");
-        return checkCausticsOutputTarget(d, in.width, in.height, "outputTarget");
-    }
-    const std::string what = "CausticsModule::addPasses: outputTarget" +
-                             (d.debugName.empty() ? std::string() : " '" + d.debugName + "'") + " (" +
-                             rhi::formatInfo(d.format).name + ", " + std::to_string(d.width) + "x" +
-                             std::to_string(d.height) + ")";
-    if (d.format != rhi::Format::RGBA8_UNORM || !rhi::hasAny(d.usage, rhi::TextureUsage::Storage) ||
-        d.width != in.width || d.height != in.height)
-        return makeError(what + ": the display image needs RGBA8_UNORM with Storage usage of the image size " +
-                         std::to_string(in.width) + "x" + std::to_string(in.height) +
-                         " (any float or unorm colour target takes the caustics with settings.causticsOnly)");
-    if (in.outputWrite != OutputWrite::Replace || in.outputScale != 1.0f)
-        return makeError(what + ": outputWrite " + outputWriteName(in.outputWrite) + " and outputScale " +
-                         std::to_string(in.outputScale) + " apply to settings.causticsOnly; the display image "
-                         "replaces the target (Replace, 1; settings.exposure sets its exposure)");
-    return okStatus();
 }
 
 CompositeAov compositeAov(CausticsAov aov) {
