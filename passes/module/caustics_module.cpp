@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "../caustics_output/caustics_output_pass.h"
 #include "../composite/composite_pass.h"
 #include "../direct_lighting/direct_lighting_pass.h"
 #include "../gbuffer/gbuffer_pass.h"
@@ -12,6 +13,7 @@
 #include "caustics_view.h"
 #include "host_gbuffer.h"
 #include "live_scene.h"
+#include "output_target_check.h"
 
 namespace caustics {
 
@@ -28,6 +30,7 @@ struct CausticsModule::Impl {
     std::optional<ObjectIdRemapPass> objectIdRemap;
     std::optional<DirectLightingPass> direct;
     std::optional<CompositePass> composite;
+    std::optional<CausticsOutputPass> output;   // caustics-only into FrameInputs::outputTarget
     CausticResources caustics;
     bool causticsReady = false;
     // CausticsSettings::causticTimeTargetMs: the steered budget (photon_budget.h).
@@ -58,6 +61,7 @@ Result<std::unique_ptr<CausticsModule>> CausticsModule::create(rhi::DeviceHandle
     const rhi::BindingLayoutHandle& sceneLayout = impl->liveScene->layout();
     CAUSTICS_TRY(impl->gbuffer, GBufferPass::create(dev, sceneLayout, impl->cameraLayout));
     CAUSTICS_TRY(impl->objectIdRemap, ObjectIdRemapPass::create(dev));
+    CAUSTICS_TRY(impl->output, CausticsOutputPass::create(dev));   // its pipelines: per format, on first use
     auto module = std::unique_ptr<CausticsModule>(new CausticsModule(std::move(impl)));
     CAUSTICS_TRY(module->impl_->defaultView, module->createView());
     CAUSTICS_CHECK(module->prepare());
@@ -175,6 +179,7 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
                          std::to_string(in.height) + " is outside [1, 16384]");
     if (m.settings.causticsOnly && !in.hostGBuffer)
         return makeError("CausticsModule::addPasses: settings.causticsOnly needs FrameInputs::hostGBuffer");
+    CAUSTICS_CHECK(checkOutputTarget(in, m.settings.causticsOnly));
     if ((m.settings.causticsEnabled && !m.causticsReady) || (!m.settings.causticsOnly && !m.direct))
         return makeError("CausticsModule::addPasses: the settings need pipelines the module has not made (a "
                          "failed prepare()): call prepare() (it records and submits on the host's queue)");
@@ -260,7 +265,22 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         out.secondType = co.secondType;
         out.causticStats = co.stats;
     }
+    rg::RgTexture shownCaustics = out.caustics;
+    if (m.settings.aov == CausticsAov::FirstType && out.firstType.valid()) shownCaustics = out.firstType;
+    if (m.settings.aov == CausticsAov::SecondType && out.secondType.valid()) shownCaustics = out.secondType;
     if (m.settings.causticsOnly) {
+        if (in.outputTarget) {
+            const rhi::TextureDesc& d = in.outputTarget->desc();
+            rg::RgTexture target = graph.importTexture("output", in.outputTarget, in.outputState, in.outputState);
+            CausticsOutputParams params{shownCaustics, target, d.format, in.width, in.height, in.outputWrite,
+                                        in.outputScale};
+            CAUSTICS_TRY(rg::RgTexture written, m.output->addToGraph(graph, *m.device, params));
+            out.output = written.valid() ? written : target;
+            // The host handed the target in to have it written: keep the passes that feed it (an import
+            // is no graph output by itself, and culling would drop them without a word).
+            graph.markOutput(out.output);
+            return out;
+        }
         // The host composites: it must read (or mark) the caustics, else the graph culls every pass.
         expectSomeOutputRead(graph, out);
         return out;
@@ -272,20 +292,19 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
     // Depth AOV: metres shown white; an infinite far plane (clip.y = 0) uses the 50 m cap.
     const float far = frame.camera.clip.y > 0.0f ? frame.camera.clip.y : 50.0f;
     params.depthRange = std::max(1.0f, std::min(far, 50.0f));
-    if (in.outputTarget) {
-        if (in.outputTarget->desc().format != rhi::Format::RGBA8_UNORM ||
-            in.outputTarget->desc().width != in.width || in.outputTarget->desc().height != in.height)
-            return makeError("CausticsModule::addPasses: outputTarget must be RGBA8_UNORM of the image size");
+    if (in.outputTarget) {   // checked by checkOutputTarget
         params.display = graph.importTexture("output", in.outputTarget, in.outputState, in.outputState);
     }
-    rg::RgTexture shownCaustics = out.caustics;
-    if (m.settings.aov == CausticsAov::FirstType && out.firstType.valid()) shownCaustics = out.firstType;
-    if (m.settings.aov == CausticsAov::SecondType && out.secondType.valid()) shownCaustics = out.secondType;
     CompositeOutputs co = m.composite->addToGraph(graph, out.gbuffer, out.direct, shownCaustics, params);
     out.display = co.display;
     out.hdr = co.hdr;
-    // Reading none of its images (or the host's outputTarget) culls the whole module without a word.
-    if (!in.outputTarget) expectSomeOutputRead(graph, out);
+    if (in.outputTarget) {
+        out.output = co.display;
+        graph.markOutput(out.output);   // as above: the host's target is what the frame is for
+    } else {
+        // Reading none of its images culls the whole module without a word.
+        expectSomeOutputRead(graph, out);
+    }
     return out;
 }
 

@@ -6,7 +6,7 @@ namespace caustics::rhi {
 
 const FormatInfo& formatInfo(Format format) {
     // Indexed by Format; order must follow the enum.
-    static const std::array<FormatInfo, 18> kInfos = {{
+    static const std::array<FormatInfo, 20> kInfos = {{
         {"Unknown", 0, false, false, false},
         {"R8_UNORM", 1, false, false, false},
         {"RG8_UNORM", 2, false, false, false},
@@ -25,8 +25,10 @@ const FormatInfo& formatInfo(Format format) {
         {"RGBA32_FLOAT", 16, false, false, false},
         {"D32_FLOAT", 4, true, false, false},
         {"D24_UNORM_S8_UINT", 4, true, true, false},
+        {"R11G11B10_FLOAT", 4, false, false, false},
+        {"RGB10A2_UNORM", 4, false, false, false},
     }};
-    static_assert(uint32_t(Format::D24_UNORM_S8_UINT) + 1 == 18);
+    static_assert(uint32_t(kLastFormat) + 1 == 20);
     uint32_t index = uint32_t(format);
     return kInfos[index < kInfos.size() ? index : 0];
 }

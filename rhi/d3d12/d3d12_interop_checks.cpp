@@ -93,7 +93,7 @@ Result<TextureDesc> textureDescFromD3D12(const D3D12TextureFacts& facts, Texture
     if (facts.width == 0 || facts.width > UINT32_MAX || facts.height == 0)
         return makeError(what + ": size " + std::to_string(facts.width) + "x" + std::to_string(facts.height));
     std::optional<Format> format;
-    for (uint32_t f = uint32_t(Format::R8_UNORM); f <= uint32_t(Format::D24_UNORM_S8_UINT) && !format; ++f)
+    for (uint32_t f = uint32_t(Format::R8_UNORM); f <= uint32_t(kLastFormat) && !format; ++f)
         if (Format(f) != Format::RGB32_FLOAT &&
             (uint32_t(d3d12::toDxgiFormat(Format(f))) == facts.dxgiFormat ||
              uint32_t(d3d12::toDxgiResourceFormat(Format(f))) == facts.dxgiFormat))

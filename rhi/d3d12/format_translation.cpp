@@ -22,6 +22,8 @@ DXGI_FORMAT toDxgiFormat(Format format) {
         case Format::RGBA32_FLOAT: return DXGI_FORMAT_R32G32B32A32_FLOAT;
         case Format::D32_FLOAT: return DXGI_FORMAT_D32_FLOAT;
         case Format::D24_UNORM_S8_UINT: return DXGI_FORMAT_D24_UNORM_S8_UINT;
+        case Format::R11G11B10_FLOAT: return DXGI_FORMAT_R11G11B10_FLOAT;
+        case Format::RGB10A2_UNORM: return DXGI_FORMAT_R10G10B10A2_UNORM;
     }
     return DXGI_FORMAT_UNKNOWN;
 }

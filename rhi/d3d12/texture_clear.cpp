@@ -52,11 +52,21 @@ uint32_t channelsOf(Format f) {
         case Format::R8_UNORM: case Format::R16_FLOAT: case Format::R32_UINT: case Format::R32_FLOAT:
         case Format::D32_FLOAT: case Format::D24_UNORM_S8_UINT: return 1;
         case Format::RG8_UNORM: case Format::RG16_FLOAT: case Format::RG32_UINT: case Format::RG32_FLOAT: return 2;
-        case Format::RGB32_FLOAT: return 3;
+        case Format::RGB32_FLOAT: case Format::R11G11B10_FLOAT: return 3;
         case Format::Unknown: return 0;
         default: return 4;
     }
 }
+
+// An unsigned small float of `mantissaBits` (6: 11-bit, 5: 10-bit) with the half's 5-bit exponent:
+// the half's bits shifted down, rounded to nearest (negatives clamp to 0).
+uint32_t smallFloat(float v, uint32_t mantissaBits) {
+    const uint32_t drop = 10u - mantissaBits;
+    const uint32_t h = floatToHalf(std::max(v, 0.0f)) & 0x7FFFu;
+    if (h >= 0x7C00u) return (0x1Fu << mantissaBits) | (h > 0x7C00u ? 1u : 0u);   // inf, NaN
+    return std::min((h + (1u << (drop - 1))) >> drop, (0x1Fu << mantissaBits) - 1u);   // never rounds into inf
+}
+uint32_t unormBits(float v, uint32_t max) { return uint32_t(std::lround(std::clamp(v, 0.0f, 1.0f) * float(max))); }
 
 }  // namespace
 
@@ -76,6 +86,13 @@ std::vector<uint8_t> encodeClearPixel(Format format, const float v[4]) {
             break;
         case Format::R16_FLOAT: case Format::RG16_FLOAT: case Format::RGBA16_FLOAT:
             for (uint32_t c = 0; c < n; ++c) append(out, floatToHalf(v[c]));
+            break;
+        case Format::R11G11B10_FLOAT:   // red in bits 0-10, green 11-21, blue 22-31
+            append(out, smallFloat(v[0], 6) | smallFloat(v[1], 6) << 11 | smallFloat(v[2], 5) << 22);
+            break;
+        case Format::RGB10A2_UNORM:   // red in bits 0-9, green 10-19, blue 20-29, alpha 30-31
+            append(out, unormBits(v[0], 1023) | unormBits(v[1], 1023) << 10 | unormBits(v[2], 1023) << 20 |
+                            unormBits(v[3], 3) << 30);
             break;
         case Format::D24_UNORM_S8_UINT:   // 24-bit depth in the low bits, stencil 0 in the top byte
             append(out, uint32_t(std::lround(double(std::clamp(v[0], 0.0f, 1.0f)) * 16777215.0)));

@@ -23,6 +23,8 @@ VkFormat toVkFormat(Format format) {
         case Format::RGBA32_FLOAT: return VK_FORMAT_R32G32B32A32_SFLOAT;
         case Format::D32_FLOAT: return VK_FORMAT_D32_SFLOAT;
         case Format::D24_UNORM_S8_UINT: return VK_FORMAT_D24_UNORM_S8_UINT;
+        case Format::R11G11B10_FLOAT: return VK_FORMAT_B10G11R11_UFLOAT_PACK32;
+        case Format::RGB10A2_UNORM: return VK_FORMAT_A2B10G10R10_UNORM_PACK32;
     }
     return VK_FORMAT_UNDEFINED;
 }

@@ -20,7 +20,7 @@ Result<vulkan::VulkanDevice*> vulkanDevice(IDevice& device, const char* call, co
 }
 
 std::optional<Format> formatFromVk(VkFormat format) {
-    for (uint32_t f = uint32_t(Format::R8_UNORM); f <= uint32_t(Format::D24_UNORM_S8_UINT); ++f)
+    for (uint32_t f = uint32_t(Format::R8_UNORM); f <= uint32_t(kLastFormat); ++f)
         if (Format(f) != Format::RGB32_FLOAT && vulkan::toVkFormat(Format(f)) == format) return Format(f);
     return std::nullopt;
 }

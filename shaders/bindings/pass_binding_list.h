@@ -2,6 +2,7 @@
 // Every pass whose shader resources are declared once (shader_binding.h): the generator writes the
 // GLSL and HLSL declarations of each. A pass adopting the scheme adds its declaration here and its
 // name to CAUSTICS_PASS_BINDINGS (shaders/bindings/CMakeLists.txt).
+#include "caustics_output/caustics_output_bindings.h"
 #include "composite/composite_bindings.h"
 #include "caustic_maps/caustic_map_bindings.h"
 #include "caustic_maps/emitters_bindings.h"
@@ -31,6 +32,6 @@ inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRema
                                                      &kEmittersBindings, &kCausticMapBindings,
                                                      &kDirectLightingBindings, &kGBufferBindings,
                                                      &kSecondTypeGuidesBindings, &kSecondTypeGuideFillBindings,
-                                                     &kCombineTypesBindings};
+                                                     &kCombineTypesBindings, &kCausticsOutputBindings};
 
 }  // namespace caustics::shader_bindings

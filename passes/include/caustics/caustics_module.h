@@ -11,11 +11,12 @@
 //   graph.passTimeMs("direct_lighting")           // per-pass GPU medians come from the graph
 //
 // Pass names: view.begin, scene.update, gbuffer (or gbuffer.object_ids for a host G-buffer with an id
-// map), direct_lighting, caustics.* (caustic_passes.h),
-// composite. The scene is read every frame: instances, lights and materials may change between
-// frames (live_scene.h). A host G-buffer (caustics/gbuffer.h contract) replaces our G-buffer pass; a
-// host output target (RGBA8_UNORM with Storage usage) receives the display image instead of a
-// transient. settings.causticsOnly leaves compositing to the host.
+// map), direct_lighting, caustics.* (caustic_passes.h), composite (caustics.output instead in
+// caustics-only mode with an outputTarget). The scene is read every frame: instances, lights and
+// materials may change between frames (live_scene.h). A host G-buffer (caustics/gbuffer.h contract)
+// replaces our G-buffer pass; a host output target receives the display image instead of a transient,
+// or, with settings.causticsOnly (compositing left to the host), the caustics replaced into or added
+// onto it (FrameInputs::outputWrite).
 #include <memory>
 #include <optional>
 
@@ -23,6 +24,7 @@
 #include "caustics/caustics_settings.h"
 #include "caustics/gbuffer.h"
 #include "caustics/memory_report.h"
+#include "caustics/output_target.h"
 #include "caustics/host_scene.h"
 #include "caustics/render_graph/render_graph.h"
 #include "caustics/rhi/device.h"
@@ -63,8 +65,17 @@ struct FrameInputs {
     CausticsView* view = nullptr;              // null: the module's default view
     std::optional<HostGBuffer> hostGBuffer;    // imported instead of running our G-buffer pass
     HostSceneTables hostScene;                 // the host's TLAS / scene tables, each optional (host_scene.h)
-    rhi::TextureHandle outputTarget;           // optional RGBA8_UNORM, Storage usage
+    // Optional host image the module writes its result into (docs/embedding.md "Output target"):
+    //  - settings.causticsOnly: caustic radiance x outputScale, per outputWrite (Add onto the host's lit
+    //    HDR buffer is the usual case). A float or unorm colour format with three or four channels
+    //    (causticsOutputFormatSupported, caustics/output_target.h), RenderTarget usage, the image size.
+    //  - otherwise: the display image (RGBA8_UNORM with Storage usage) instead of a transient; Replace
+    //    and outputScale 1 only.
+    // Refused formats, usages and sizes are addPasses errors naming the field.
+    rhi::TextureHandle outputTarget;
     rhi::ResourceState outputState = rhi::ResourceState::ShaderResource;   // before and after the graph
+    OutputWrite outputWrite = OutputWrite::Replace;
+    float outputScale = 1.0f;   // caustics-only: the host's exposure (pre-exposure) of its target, >= 0
 };
 
 struct FrameOutputs {
@@ -79,6 +90,9 @@ struct FrameOutputs {
     rg::RgTexture firstType, secondType;
     GBuffer gbuffer;
     rg::RgBuffer causticStats; // uint32[kStatCount] (caustic_passes.h); causticStatsWarnings() reads it
+    // FrameInputs::outputTarget as the module left it (its last version in the graph: read it in a later
+    // pass of the host's); invalid without a target.
+    rg::RgTexture output;
 };
 
 class CausticsModule {

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "caustic_maps/caustic_internal.h"
+#include "caustics_output/caustics_output_pass.h"
 #include "caustics/caustic_passes.h"
 #include "caustics/caustics_module.h"
 #include "recording_device.h"   // tests/unit/render_graph
@@ -221,6 +222,11 @@ Result<std::vector<RecordedPipeline>> recordPassPipelines(const PassPipelineOpti
     if (!caustics) return makeError("recording CausticResources::create: " + caustics.message());
     Status scenePipelines = caustics.value().impl()->ensureScenePipelines(sceneBindings.value().layout);
     if (!scenePipelines.ok()) return makeError("recording the caustic scene pipelines: " + scenePipelines.message());
+    // The caustics-only output: its pipelines are made per host format on first use (one stands for all).
+    auto output = CausticsOutputPass::create(*device);
+    if (!output) return makeError("recording CausticsOutputPass::create: " + output.message());
+    auto outputPipeline = output.value().pipeline(*device, rhi::Format::RGBA16_FLOAT, OutputWrite::Add);
+    if (!outputPipeline) return makeError("recording the caustics output pipeline: " + outputPipeline.message());
     return std::move(device->pipelines);
 }
 

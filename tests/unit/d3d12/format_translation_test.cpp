@@ -6,7 +6,7 @@ namespace caustics::rhi::d3d12 {
 namespace {
 
 TEST(D3D12Formats, EveryRhiFormatButUnknownHasADxgiFormat) {
-    for (uint32_t f = 1; f <= uint32_t(Format::D24_UNORM_S8_UINT); ++f)
+    for (uint32_t f = 1; f <= uint32_t(kLastFormat); ++f)
         EXPECT_NE(toDxgiFormat(Format(f)), DXGI_FORMAT_UNKNOWN) << formatInfo(Format(f)).name;
     EXPECT_EQ(toDxgiFormat(Format::Unknown), DXGI_FORMAT_UNKNOWN);
 }

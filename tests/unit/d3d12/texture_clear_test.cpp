@@ -69,9 +69,25 @@ TEST(D3D12TextureClear, UintValuesOnFloatFormatsAreBitPatterns) {
     EXPECT_EQ(f, 2.5f);
 }
 
+// The packed HDR formats: R11G11B10_FLOAT keeps the half's exponent and its top 6 (red, green) or 5
+// (blue) mantissa bits; RGB10A2_UNORM rounds to 1023 and 3 steps, red in the low bits.
+TEST(D3D12TextureClear, PackedFormatsPutEachChannelInItsBits) {
+    const float hdr[4] = {1.0f, 0.5f, 2.0f, 0.0f};
+    std::vector<uint8_t> px = encodeClearPixel(Format::R11G11B10_FLOAT, hdr);
+    ASSERT_EQ(px.size(), 4u);
+    uint32_t bits;
+    std::memcpy(&bits, px.data(), 4);
+    EXPECT_EQ(bits, 0x3C0u | 0x380u << 11 | 0x200u << 22);
+    const float ldr[4] = {1.0f, 0.0f, 0.5f, 1.0f};
+    px = encodeClearPixel(Format::RGB10A2_UNORM, ldr);
+    ASSERT_EQ(px.size(), 4u);
+    std::memcpy(&bits, px.data(), 4);
+    EXPECT_EQ(bits, 1023u | 512u << 20 | 3u << 30);
+}
+
 TEST(D3D12TextureClear, PixelSizeMatchesTheFormat) {
     const float v[4] = {1, 1, 1, 1};
-    for (uint32_t f = 1; f <= uint32_t(Format::D24_UNORM_S8_UINT); ++f)
+    for (uint32_t f = 1; f <= uint32_t(kLastFormat); ++f)
         EXPECT_EQ(encodeClearPixel(Format(f), v).size(), formatInfo(Format(f)).bytesPerPixel) << formatInfo(Format(f)).name;
 }
 
