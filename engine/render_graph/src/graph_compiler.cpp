@@ -178,6 +178,10 @@ Result<CompiledPlan> compileGraph(const GraphDesc& g, const IMemorySizer& sizer)
         if (res.imported || res.kind == ResourceKind::AccelStruct) continue;
         // Host-visible buffers keep their own memory (the heap is device-local).
         if (res.kind == ResourceKind::Buffer && res.bufferDesc.memory != rhi::MemoryType::DeviceLocal) continue;
+        // So do indirect-argument buffers (a few bytes each): a driver may find them by device address,
+        // and lavapipe's address table loses a buffer whose start address an aliased buffer shares
+        // once that one is destroyed ("unrecognized BDA!" at an indirect ray dispatch, then abort).
+        if (res.kind == ResourceKind::Buffer && rhi::hasAny(plan.bufferDescs[r].usage, rhi::BufferUsage::Indirect)) continue;
         if (res.kind == ResourceKind::Texture) {
             plan.textureDescs[r].isVirtual = true;
             plan.memory[r] = sizer.requirements(plan.textureDescs[r]);
