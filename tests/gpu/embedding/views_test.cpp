@@ -108,9 +108,12 @@ TEST_F(Views, GraphBuiltButNotExecutedLeavesTheHistoryAlone) {
 
 // Measured (lavapipe 2026-11-30): 5 in flight vs 1 in flight over 8 frames of a moving scene, worst
 // frame 1.7e-8 to 1.4e-7 over three runs (float-atomic summation order); first vs last frame of the run
-// 1.21. Bound 1e-6, about 8 float32 epsilons (7x the largest measurement); a frame reading another frame's tables, camera or history
-// differs by a large fraction of the frame-to-frame change.
-constexpr double kInFlightBound = 1e-6;
+// 1.21. On the H200 (2026-12-02, the caster-motion filter on: the moving sphere's history is kept and
+// tested against each frame's photons) the first run in a process measured 1.65e-6 and three repeats 0
+// (docs/measurements/h200/gpu_tests_session7.txt): the summation order's noise, passed through the
+// history test's threshold. Bound 1e-5, 6x the largest measurement; a frame reading another frame's
+// tables, camera or history differs by a large fraction of the frame-to-frame change (1.2-2.0).
+constexpr double kInFlightBound = 1e-5;
 
 TEST_F(FramesInFlight, FiveInFlightGiveTheSameImagesAsOne) {
     constexpr uint32_t kLiveFrames = 8;
