@@ -20,12 +20,8 @@ std::vector<glm::vec4> casterMotionRows(CasterMotionState& state, const scene::S
     for (size_t i = 0; i < n; ++i) {
         // The transform is the same product in both frames when nothing moved: compare, then build.
         const glm::mat4 toPrevious = state.previous[i] * glm::inverse(state.current[i]);
-        // Rows of the 3x4s as columns of the transposes.
-        const glm::mat4 back = glm::transpose(toPrevious), forth = glm::transpose(glm::inverse(toPrevious));
-        for (int r = 0; r < 3; ++r) {
-            rows[shader::kCasterMotionRowsPerInstance * i + size_t(r)] = back[r];
-            rows[shader::kCasterMotionRowsPerInstance * i + 3 + size_t(r)] = forth[r];
-        }
+        const glm::mat4 t = glm::transpose(toPrevious);   // rows of the 3x4 as columns of the transpose
+        for (uint32_t r = 0; r < shader::kCasterMotionRowsPerInstance; ++r) rows[shader::kCasterMotionRowsPerInstance * i + r] = t[int(r)];
         if (state.previous[i] == state.current[i]) continue;
         const scene::Mesh& mesh = scene.meshes[scene.instances[i].mesh];
         if (mesh.material < scene.materials.size() && scene.materials[mesh.material].isSpecular()) casterMoved = true;

@@ -37,7 +37,7 @@ struct CasterMotionState {
     std::optional<uint32_t> frame;
 };
 // Per instance, the rows of prev x inverse(current) (a world point on the instance this frame -> where it
-// was last frame) and of its inverse (shaders/common/caster_motion.h); empty when there is no last frame, the instances changed, or no specular
+// was last frame; shaders/common/caster_motion.h); empty when there is no last frame, the instances changed, or no specular
 // instance moved.
 std::vector<glm::vec4> casterMotionRows(CasterMotionState& state, const scene::Scene& scene, uint32_t frameIndex);
 
@@ -126,7 +126,7 @@ struct CausticFrame {
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereBlas, sphereTlas;
     SecondTypeGuides secondTypeGuides;   // caustics.secondTypeGuides (invalid without the second type)
-    // Caster motion (docs/caustics.md "Moving casters"): 6 rows per instance (casterMotionRows; empty when
+    // Caster motion (docs/caustics.md "Moving casters"): 3 rows per instance (casterMotionRows; empty when
     // no specular instance moved),
     // and the per-pixel sums the forward pass accumulates from them (4 words per pixel when moving,
     // else a 16-byte placeholder the passes bind).

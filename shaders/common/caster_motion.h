@@ -13,9 +13,8 @@ CAUSTICS_SHARED_BEGIN
 CAUSTICS_CONST float kCasterMotionScale = 4096.0f;
 CAUSTICS_CONST float kCasterMotionMaxShift = 4.0f;
 CAUSTICS_CONST uint kCasterMotionWords = 4u;
-// Per instance, 3 rows of the 3x4 matrix prev x inverse(current) (this frame's pose to last frame's),
-// then 3 of its inverse.
-CAUSTICS_CONST uint kCasterMotionRowsPerInstance = 6u;
+// Per instance, the 3 rows of the 3x4 matrix prev x inverse(current) (this frame's pose to last frame's).
+CAUSTICS_CONST uint kCasterMotionRowsPerInstance = 3u;
 
 // Where a photon that reached receiver point r along `dir` would have landed last frame, minus r, when
 // the specular chain that sent it moved by `chainShift` since then (last frame's position of its last

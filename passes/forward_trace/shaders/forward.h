@@ -137,11 +137,10 @@ void addCasterMotion(uint pixel, float3 shift) {
     casterMotionAtomicAdd(kCasterMotionWords * pixel + 3u, 1u);
 }
 
-// Instance i's motion applied to a point (w = 1) or a direction (w = 0): `rows` 0 takes this frame's pose
-// to last frame's, 3 last frame's to this frame's (kCasterMotionRowsPerInstance rows per instance).
-float3 instanceMotionApply(uint instance, uint rows, float3 v, float w) {
-    float4 p = float4(v, w);
-    uint r = kCasterMotionRowsPerInstance * instance + rows;
+// Where world point x on instance i was last frame (its rows of prev x inverse(current)).
+float3 instancePreviousPosition(uint instance, float3 x) {
+    float4 p = float4(x, 1.0f);
+    uint r = kCasterMotionRowsPerInstance * instance;
     return float3(dot(instanceMotionLoad(r), p), dot(instanceMotionLoad(r + 1u), p), dot(instanceMotionLoad(r + 2u), p));
 }
 
@@ -225,7 +224,7 @@ void forwardLaunch(uint launch, uint launchCount) {
             if (ev.kind != kEventDiffuse) {
                 ++events;
                 if (motion && hit.instance < params.instanceCount) {
-                    float3 shift = instanceMotionApply(hit.instance, 0u, x, 1.0f) - x;
+                    float3 shift = instancePreviousPosition(hit.instance, x) - x;
                     if (dot(shift, shift) > 1e-10f) vertexShift = shift;   // over 10 um: not rounding
                 }
                 flux *= ev.weight;
