@@ -4,7 +4,7 @@
 # (passes/*/shaders/*.h, shaders/common/) are compiled as GLSL, HLSL and C++ and are not counted.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-hlsl=$( { find shaders/d3d12 \( -name '*.hlsl' -o -name '*.hlsli' -o -name '*.h' \) -not -path '*/include/*' -print; ls passes/*/shaders/*.hlsl 2>/dev/null || true; } | sort -u)
+hlsl=$( { find shaders/d3d12 \( -name '*.hlsl' -o -name '*.hlsli' -o -name '*.h' \) -not -path '*/include/*' -print; ls passes/*/shaders/*.hlsl passes/*/shaders/*.hlsli 2>/dev/null || true; } | sort -u)
 glsl=$( { find shaders/vulkan -type f -print; ls passes/*/shaders/* 2>/dev/null | grep -E '\.(comp|vert|frag|rgen|rchit|rmiss|rahit|rint|glsl)$' || true; } | sort -u)
 echo "HLSL lines no CI tool compiles: $(cat $hlsl | wc -l) in $(echo "$hlsl" | wc -l) files"
 echo "GLSL-only lines:                $(cat $glsl | wc -l) in $(echo "$glsl" | wc -l) files"

@@ -6,7 +6,13 @@
 // The cost follows the specular pixels and stored hits, not W x H (docs/caustics.md, "Second-type cost").
 #include <algorithm>
 
+#include "backward_trace/backward_bindings.h"
+#include "backward_trace/gather_bindings.h"
+#include "backward_trace/shaders/backward.h"
+#include "backward_trace/shaders/gather.h"
 #include "caustic_maps/caustic_internal.h"
+#include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
@@ -27,35 +33,33 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
                             rg::Access::StorageWrite);
         f.sphereAabbs = b.write(f.sphereAabbs, rg::Access::StorageWrite);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
-        // Mirrors the push block of shaders/vulkan/backward_trace/backward.rgen.
-        struct Push {
-            uint32_t policy;
-            float scale, worldRadius;
-            uint32_t maxDepth, frame;
-            float minMagnification, maxMagnification, minRadius, maxRadius;
-            uint32_t sphereCapacity;   // set when the graph executes
-        } push{s.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint ? 0u : 1u,
-               s.sphereRadiusScale,
-               s.sphereWorldRadius,
-               s.maxSpecularDepth,
-               f.in->frameIndex * 0x9E3779B9u + s.seed,
-               s.sphereMinMagnification,
-               s.sphereMaxMagnification,
-               s.sphereMinRadius,
-               s.sphereMaxRadius,
-               0};
-        static_assert(sizeof(Push) == kBackwardPushBytes);
+        shader::BackwardParams push{s.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint ? shader::kBackwardRadiusFootprint
+                                                                                              : shader::kBackwardRadiusWorld,
+                                    s.sphereRadiusScale,
+                                    s.sphereWorldRadius,
+                                    s.maxSpecularDepth,
+                                    f.in->frameIndex * 0x9E3779B9u + s.seed,
+                                    s.sphereMinMagnification,
+                                    s.sphereMaxMagnification,
+                                    s.sphereMinRadius,
+                                    s.sphereMaxRadius,
+                                    0};   // sphereCapacity: set when the graph executes
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) mutable {
             CausticResources::Impl& r = *h.res;
-            rhi::BindingSetDesc d;
-            d.add(rhi::BindingSetItem::constantBuffer(0, ctx.buffer(h.camera)))
-                .add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(h.spheres)))
-                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.sphereAabbs)))
-                .add(rhi::BindingSetItem::storageBuffer(5, ctx.buffer(h.stats)))
-                .add(rhi::BindingSetItem::storageBuffer(6, ctx.buffer(h.specularPixels), false));
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.backwardLayout, d);
+            auto desc = PassBindingSet(shader_bindings::kBackwardBindings, 1)
+                            .buffer("camera", ctx.buffer(h.camera))
+                            .buffer("spheres", ctx.buffer(h.spheres))
+                            .buffer("sphereAabbs", ctx.buffer(h.sphereAabbs))
+                            .buffer("stats", ctx.buffer(h.stats))
+                            .buffer("specularPixels", ctx.buffer(h.specularPixels))
+                            .desc();
+            if (!desc) {
+                log(LogLevel::Error, "caustics.backward: " + desc.message());
+                return;
+            }
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.backwardLayout, *desc);
             if (!set) return;
             push.sphereCapacity = *h.sphereCapacity;
             bindSceneTrace(ctx.cmd(), r.backwardState, r.backwardTable, sceneSet, set, push);
@@ -112,18 +116,24 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         return [=](rg::PassContext& ctx) {
             if (*h.sphereCapacity == 0) return;   // the TLAS was not built this frame
             CausticResources::Impl& r = *h.res;
-            rhi::BindingSetDesc d;
-            d.add(rhi::BindingSetItem::accelStructItem(0, ctx.accelStruct(h.sphereTlas)))
-                .add(rhi::BindingSetItem::storageBuffer(1, ctx.buffer(h.spheres), false))
-                .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(h.hits), false))
-                .add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(h.stats)))
-                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.secondTypeTarget())));
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gatherLayout, d);
+            auto desc = PassBindingSet(gatherBindings(r), 0)
+                            .accelStruct("sphereTlas", ctx.accelStruct(h.sphereTlas))
+                            .buffer("spheres", ctx.buffer(h.spheres))
+                            .buffer("hits", ctx.buffer(h.hits))
+                            .buffer("stats", ctx.buffer(h.stats))
+                            .buffer("radianceWords", ctx.buffer(h.secondTypeTarget()))
+                            .desc();
+            if (!desc) {
+                log(LogLevel::Error, "caustics.gather: " + desc.message());
+                return;
+            }
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gatherLayout, *desc);
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setRayTracingState(r.gatherState, r.gatherTable);
             cmd.setBindingSet(0, set);
-            cmd.setPushConstants(&maxHits, 4);
+            const shader::GatherParams push{maxHits};
+            cmd.setPushConstants(&push, sizeof(push));
             // Without indirect dispatch: launched for the buffer's capacity; launches past the stored
             // count return at once.
             if (indirect) cmd.dispatchRaysIndirect(ctx.buffer(gatherGrid));

@@ -1,11 +1,15 @@
 // caustics.specularPixels: compacts the camera pixels whose surface is specular into a list and counts
-// the backward grid up (shaders/*/backward_trace/specular_pixels.*; the list is cut at the frame's
+// the backward grid up (shaders/specular_pixels.h; the list is cut at the frame's
 // sphere capacity, the count is not), so that caustics.backward launches once per listed specular pixel, as caustics.forward launches once per emitting texel (docs/caustics.md,
 // "Second-type cost"). It also chooses the frame's sphere capacity (caustics/sphere_capacity.h) and zeroes
 // the sphere AABB list: the slots the backward pass leaves unwritten are point boxes at the origin, which
 // the intersection shader refuses by their index. (NaN boxes, inactive by the Vulkan and DXR specs, left
 // lavapipe's BVH without a single hit.)
+#include "backward_trace/shaders/specular_pixels.h"
+#include "backward_trace/specular_pixels_bindings.h"
 #include "caustic_maps/caustic_internal.h"
+#include "caustics/rhi/log.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
@@ -30,18 +34,23 @@ void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
             *h.sphereCapacity = chooseSphereCapacity(r, *h.sphereReadback, h.width, h.height, h.sphereAllocation);
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.fillBuffer(ctx.buffer(h.sphereAabbs), 0);   // every slot the BLAS build reads
-            rhi::BindingSetDesc d;
-            d.add(rhi::BindingSetItem::sampledTexture(0, ctx.texture(objectId)))
-                .add(rhi::BindingSetItem::sampledTexture(1, ctx.texture(optics)))
-                .add(rhi::BindingSetItem::storageBuffer(2, ctx.buffer(h.specularPixels)))
-                .add(rhi::BindingSetItem::storageBuffer(3, ctx.buffer(h.backwardArgs)))
-                .add(rhi::BindingSetItem::storageBuffer(4, ctx.buffer(h.stats)));
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.specularPixelLayout, d);
+            auto desc = PassBindingSet(shader_bindings::kSpecularPixelsBindings, 0)
+                            .texture("gObjectId", ctx.texture(objectId))
+                            .texture("gOptics", ctx.texture(optics))
+                            .buffer("specularPixels", ctx.buffer(h.specularPixels))
+                            .buffer("args", ctx.buffer(h.backwardArgs))
+                            .buffer("stats", ctx.buffer(h.stats))
+                            .desc();
+            if (!desc) {
+                log(LogLevel::Error, "caustics.specularPixels: " + desc.message());
+                return;
+            }
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.specularPixelLayout, *desc);
             if (!set) return;
-            const uint32_t push[3] = {h.width, h.height, *h.sphereCapacity};
+            const shader::SpecularPixelParams push{h.width, h.height, *h.sphereCapacity};
             cmd.setComputePipeline(r.specularPixelPipeline);
             cmd.setBindingSet(0, set);
-            cmd.setPushConstants(push, sizeof(push));
+            cmd.setPushConstants(&push, sizeof(push));
             cmd.dispatch((h.width + 7) / 8, (h.height + 7) / 8, 1);
         };
     });

@@ -36,10 +36,5 @@ uint32_t grownFilterPoolTiles(uint32_t poolTiles, uint32_t wanted, uint32_t widt
 // Sizes `history` for a width x height view (reallocated, and invalid, when the size or the pool changes).
 Status ensureFilterHistory(CausticResources::Impl& res, CausticViewHistory& history, uint32_t width, uint32_t height);
 
-// Small helpers for the passes' persistent pipelines (defined in caustic_maps/caustic_resources.cpp).
-Result<rhi::BindingLayoutHandle> makeBindingLayout(rhi::IDevice& device,
-                                                   std::initializer_list<std::pair<uint32_t, rhi::BindingType>> items);
-Result<rhi::ComputePipelineHandle> makeComputePipeline(rhi::IDevice& device, const char* shaderPath,
-                                                       const rhi::BindingLayoutHandle& layout, uint32_t pushBytes);
 
 }  // namespace caustics

@@ -40,19 +40,19 @@ Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
     CAUSTICS_TRY(p.atrousLayout, layout(shader_bindings::kCausticAtrousBindings));
     CAUSTICS_TRY(p.atrousLastLayout, layout(shader_bindings::kCausticAtrousLastBindings));
     CAUSTICS_TRY(p.outputLayout, layout(shader_bindings::kCausticFilterOutputBindings));
-    CAUSTICS_TRY(p.resolve, makeComputePipeline(d, "caustic_filter/resolve.comp", p.resolveLayout, sizeof(shader::ResolveParams)));
-    CAUSTICS_TRY(p.tiles, makeComputePipeline(d, "caustic_filter/tiles.comp", p.tilesLayout, sizeof(shader::FilterTilesParams)));
-    CAUSTICS_TRY(p.tileList, makeComputePipeline(d, "caustic_filter/tile_list.comp", p.tileListLayout, sizeof(shader::TileListParams)));
-    CAUSTICS_TRY(p.output, makeComputePipeline(d, "caustic_filter/output.comp", p.outputLayout, sizeof(shader::FilterOutputParams)));
-    CAUSTICS_TRY(p.temporal, makeComputePipeline(d, "caustic_filter/temporal.comp", p.temporalLayout, sizeof(shader::TemporalParams)));
-    CAUSTICS_TRY(p.variance, makeComputePipeline(d, "caustic_filter/variance.comp", p.varianceLayout, sizeof(shader::VarianceParams)));
-    CAUSTICS_TRY(p.atrousWeights, makeComputePipeline(d, "caustic_filter/atrous_weights.comp", p.atrousWeightsLayout,
+    CAUSTICS_TRY(p.resolve, createPassComputePipeline(d, "caustic_filter/resolve.comp", {p.resolveLayout}, sizeof(shader::ResolveParams)));
+    CAUSTICS_TRY(p.tiles, createPassComputePipeline(d, "caustic_filter/tiles.comp", {p.tilesLayout}, sizeof(shader::FilterTilesParams)));
+    CAUSTICS_TRY(p.tileList, createPassComputePipeline(d, "caustic_filter/tile_list.comp", {p.tileListLayout}, sizeof(shader::TileListParams)));
+    CAUSTICS_TRY(p.output, createPassComputePipeline(d, "caustic_filter/output.comp", {p.outputLayout}, sizeof(shader::FilterOutputParams)));
+    CAUSTICS_TRY(p.temporal, createPassComputePipeline(d, "caustic_filter/temporal.comp", {p.temporalLayout}, sizeof(shader::TemporalParams)));
+    CAUSTICS_TRY(p.variance, createPassComputePipeline(d, "caustic_filter/variance.comp", {p.varianceLayout}, sizeof(shader::VarianceParams)));
+    CAUSTICS_TRY(p.atrousWeights, createPassComputePipeline(d, "caustic_filter/atrous_weights.comp", {p.atrousWeightsLayout},
                                                       sizeof(shader::AtrousParams)));
-    CAUSTICS_TRY(p.atrous, makeComputePipeline(d, "caustic_filter/atrous.comp", p.atrousLayout, sizeof(shader::AtrousParams)));
+    CAUSTICS_TRY(p.atrous, createPassComputePipeline(d, "caustic_filter/atrous.comp", {p.atrousLayout}, sizeof(shader::AtrousParams)));
     CAUSTICS_TRY(p.atrousLast,
-                 makeComputePipeline(d, "caustic_filter/atrous_last.comp", p.atrousLastLayout, sizeof(shader::AtrousParams)));
+                 createPassComputePipeline(d, "caustic_filter/atrous_last.comp", {p.atrousLastLayout}, sizeof(shader::AtrousParams)));
     CAUSTICS_TRY(p.combineLayout, createPassBindingLayout(d, shader_bindings::kCombineTypesBindings, 0, rhi::ShaderStage::All));
-    CAUSTICS_TRY(p.combine, makeComputePipeline(d, "caustic_filter/combine_types.comp", p.combineLayout,
+    CAUSTICS_TRY(p.combine, createPassComputePipeline(d, "caustic_filter/combine_types.comp", {p.combineLayout},
                                                 sizeof(shader::CombineTypesParams)));
     return p;
 }

@@ -13,10 +13,10 @@
 
 namespace caustics {
 
-// Push-constant bytes of the scene-trace passes (shader::ForwardParams, passes/forward_trace/shaders/forward.h,
-// and the Push struct of backward_pass.cpp); their state objects are created with exactly these, which
-// binding_truth_tests compare with the shaders' push blocks.
-inline constexpr uint32_t kForwardPushBytes = 32, kBackwardPushBytes = 40;
+// Push-constant bytes of the forward pass (shader::ForwardParams, passes/forward_trace/shaders/forward.h);
+// its state object is created with exactly these, which binding_truth_tests compare with the shader's
+// push block.
+inline constexpr uint32_t kForwardPushBytes = 32;
 
 // One frame slot's read-back sphere count (kStatSpheres) of the last frame recorded in it, with the
 // size of that frame; the host waited for that frame before executing a graph in the same slot.
@@ -153,13 +153,19 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f);
 const shader_bindings::PassBindings& forwardBindings(const CausticResources::Impl& r);
 Status createForwardLayout(CausticResources::Impl& r);
 Status createForwardState(CausticResources::Impl& r, const rhi::BindingLayoutHandle& sceneLayout);
-// A ray-tracing state over the scene TLAS: `rayGen` with forward_trace/trace.rmiss and trace.rchit
-// (the forward and backward passes; caustic_resources.cpp).
+// A ray-tracing state over the scene TLAS: `rayGen` with scene_trace/trace.rmiss and trace.rchit
+// (the forward and backward passes; scene_trace/scene_trace_state.cpp).
 Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, const rhi::BindingLayoutHandle& scene,
                        const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table);
+// backward_trace/backward_pipeline.cpp: the gather's bindings (the variant of the device's atomics),
+// the second type's layouts, the specular-pixel pipeline and the gather state (with the other
+// persistent objects), and the backward pass's state (per scene layout).
+const shader_bindings::PassBindings& gatherBindings(const CausticResources::Impl& r);
+Status createBackwardPipelines(CausticResources::Impl& r);
+Status createBackwardState(CausticResources::Impl& r, const rhi::BindingLayoutHandle& sceneLayout);
 void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f);
-void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);
-void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f);   // backward_trace/second_type_guides_pass.cpp   // backward_trace/specular_pixels_pass.cpp
+void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f);         // backward_trace/specular_pixels_pass.cpp
+void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f);     // backward_trace/second_type_guides_pass.cpp
 // backward_trace/sphere_budget.cpp: the slot's read-back of the sphere count and f.sphereCapacity;
 // the capacity from it (when the graph executes); the pass that copies this frame's count.
 void prepareSphereBudget(CausticFrame& f);

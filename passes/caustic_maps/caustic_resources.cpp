@@ -1,5 +1,6 @@
-// Persistent objects of the caustic passes: binding layouts, pipelines and state objects, the
-// unit-sphere BLAS of the second-type gather, the sphere TLAS and the filter history.
+// Persistent objects of the caustic passes: binding layouts, pipelines and state objects (each pass's
+// own from its folder: forward_pipeline.cpp, backward_pipeline.cpp, caustic_filter_resources.cpp), the
+// sphere BLAS of the second-type gather, the sphere TLAS and the filter history.
 #include "caustic_maps/caustic_internal.h"
 
 #include "caustics/pass_shaders.h"
@@ -15,62 +16,14 @@
 #include "caustic_maps/shaders/emitters.h"
 #include "caustic_maps/shaders/grid_from_count.h"
 #include "caustic_maps/shaders/photon_plan.h"
-#include "backward_trace/second_type_guide_fill_bindings.h"
-#include "backward_trace/second_type_guides_bindings.h"
-#include "backward_trace/shaders/second_type_guide_fill.h"
-#include "backward_trace/shaders/second_type_guides.h"
 #include "caustics/rhi/log.h"
 #include "module/pass_bindings.h"
 
 namespace caustics {
-namespace {
 
-using rhi::BindingType;
 using rhi::ShaderStage;
 
-Result<rhi::ComputePipelineHandle> compute(rhi::IDevice& d, const char* path,
-                                           std::vector<rhi::BindingLayoutHandle> layouts, uint32_t push) {
-    rhi::ComputePipelineDesc desc;
-    CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(d.backend(), path));
-    desc.shader.stage = ShaderStage::Compute;
-    desc.bindings.layouts = std::move(layouts);
-    desc.bindings.pushConstantBytes = push;
-    desc.debugName = path;
-    return d.createComputePipeline(desc);
-}
 
-}  // namespace
-
-Status sceneTraceState(rhi::IDevice& d, const char* rayGen, uint32_t pushBytes, const rhi::BindingLayoutHandle& scene,
-                       const rhi::BindingLayoutHandle& pass, rhi::StateObjectHandle& so, rhi::ShaderTableHandle& table) {
-    rhi::StateObjectDesc desc;
-    CAUSTICS_TRY(auto rg, pass_shaders::shaderLibrary(d.backend(), rayGen, "rayGen", ShaderStage::RayGen));
-    CAUSTICS_TRY(auto miss, pass_shaders::shaderLibrary(d.backend(), "forward_trace/trace.rmiss", "miss", ShaderStage::Miss));
-    CAUSTICS_TRY(auto hit, pass_shaders::shaderLibrary(d.backend(), "forward_trace/trace.rchit", "closestHit", ShaderStage::ClosestHit));
-    desc.libraries = {rg, miss, hit};
-    desc.hitGroups.push_back({"hit", rhi::HitGroupType::Triangles, "closestHit", "", ""});
-    desc.maxPayloadBytes = 20;   // TracePayload
-    desc.maxAttributeBytes = 8;
-    desc.maxRecursionDepth = 1;  // the specular chain is iterated in the raygen shader
-    desc.globalBindings.layouts = {scene, pass};
-    desc.globalBindings.pushConstantBytes = pushBytes;
-    desc.debugName = rayGen;
-    CAUSTICS_TRY(so, d.createStateObject(desc));
-    CAUSTICS_TRY(table, d.createShaderTable(rhi::ShaderTableDesc{so}.setRayGen("rayGen").addMiss("miss").addHitGroup("hit")));
-    return okStatus();
-}
-
-Result<rhi::BindingLayoutHandle> makeBindingLayout(rhi::IDevice& d, std::initializer_list<std::pair<uint32_t, BindingType>> items) {
-    rhi::BindingLayoutDesc desc;
-    desc.setVisibility(ShaderStage::All);
-    for (auto [slot, type] : items) desc.add(slot, type);
-    return d.createBindingLayout(desc);
-}
-
-Result<rhi::ComputePipelineHandle> makeComputePipeline(rhi::IDevice& d, const char* path, const rhi::BindingLayoutHandle& l,
-                                                       uint32_t push) {
-    return compute(d, path, {l}, push);
-}
 
 CausticResources::CausticResources() = default;
 CausticResources::~CausticResources() = default;
@@ -87,47 +40,18 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     m.retiredSphereStructures.resize(framesInFlight);
     m.floatAtomics = d.capabilities().shaderFloatAtomicAdd;
     m.int64Atomics = d.capabilities().shaderBufferInt64Atomics;
-    const auto CB = BindingType::ConstantBuffer, RO = BindingType::StorageBufferRO, RW = BindingType::StorageBufferRW,
-               TX = BindingType::SampledTexture, AS = BindingType::AccelStruct;
     CAUSTICS_TRY(m.mapLayout, createPassBindingLayout(d, shader_bindings::kCausticMapBindings, 1, ShaderStage::All));
     CAUSTICS_TRY(m.emitterLayout, createPassBindingLayout(d, shader_bindings::kEmittersBindings, 1, ShaderStage::All));
     CAUSTICS_CHECK(createForwardLayout(m));   // forward_trace/forward_pipeline.cpp
     CAUSTICS_TRY(m.photonPlanLayout, createPassBindingLayout(d, shader_bindings::kPhotonPlanBindings, 0, ShaderStage::All));
-    CAUSTICS_TRY(m.photonPlanPipeline, compute(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout},
+    CAUSTICS_TRY(m.photonPlanPipeline, createPassComputePipeline(d, "caustic_maps/photon_plan.comp", {m.photonPlanLayout},
                                                sizeof(shader::PhotonPlanParams)));
-    CAUSTICS_TRY(m.backwardLayout, makeBindingLayout(d, {{0, CB}, {3, RW}, {4, RW}, {5, RW}, {6, RO}}));
-    CAUSTICS_TRY(m.gatherLayout, makeBindingLayout(d, {{0, AS}, {1, RO}, {2, RO}, {3, RW}, {4, RW}}));
     CAUSTICS_TRY(m.gridLayout, createPassBindingLayout(d, shader_bindings::kGridFromCountBindings, 0, ShaderStage::All));
-    CAUSTICS_TRY(m.gridFromCount, compute(d, "caustic_maps/grid_from_count.comp", {m.gridLayout},
+    CAUSTICS_TRY(m.gridFromCount, createPassComputePipeline(d, "caustic_maps/grid_from_count.comp", {m.gridLayout},
                                           sizeof(shader::GridFromCountParams)));
-    CAUSTICS_TRY(m.specularPixelLayout, makeBindingLayout(d, {{0, TX}, {1, TX}, {2, RW}, {3, RW}, {4, RW}}));
-    CAUSTICS_TRY(m.specularPixelPipeline, compute(d, "backward_trace/specular_pixels.comp", {m.specularPixelLayout}, 12));
-    CAUSTICS_TRY(m.secondTypeGuideLayout, createPassBindingLayout(d, shader_bindings::kSecondTypeGuidesBindings, 0, ShaderStage::All));
-    CAUSTICS_TRY(m.secondTypeGuidePipeline, compute(d, "backward_trace/second_type_guides.comp", {m.secondTypeGuideLayout},
-                                                    sizeof(shader::SecondTypeGuideParams)));
-    CAUSTICS_TRY(m.secondTypeGuideFillLayout, createPassBindingLayout(d, shader_bindings::kSecondTypeGuideFillBindings, 0, ShaderStage::All));
-    CAUSTICS_TRY(m.secondTypeGuideFillPipeline, compute(d, "backward_trace/second_type_guide_fill.comp", {m.secondTypeGuideFillLayout},
-                                                        sizeof(shader::SecondTypeGuideFillParams)));
     CAUSTICS_TRY(m.filter, CausticFilterPipelines::create(d));
 
-    // Gather: sphere.rint + gather.rahit over the sphere TLAS (procedural hit group).
-    rhi::StateObjectDesc g;
-    CAUSTICS_TRY(auto rgen, pass_shaders::shaderLibrary(d.backend(), "backward_trace/gather.rgen", "rayGen", ShaderStage::RayGen));
-    CAUSTICS_TRY(auto miss, pass_shaders::shaderLibrary(d.backend(), "backward_trace/gather.rmiss", "miss", ShaderStage::Miss));
-    CAUSTICS_TRY(auto isect, pass_shaders::shaderLibrary(d.backend(), "backward_trace/sphere.rint", "sphere", ShaderStage::Intersection));
-    const char* gatherAnyHit = m.floatAtomics   ? "backward_trace/gather.rahit"
-                               : m.int64Atomics ? "backward_trace/gather_fixed64.rahit"
-                                                : "backward_trace/gather_fixed.rahit";
-    CAUSTICS_TRY(auto ahit, pass_shaders::shaderLibrary(d.backend(), gatherAnyHit, "gather", ShaderStage::AnyHit));
-    g.libraries = {rgen, miss, isect, ahit};
-    g.hitGroups.push_back({"spheres", rhi::HitGroupType::Procedural, "", "gather", "sphere"});
-    g.maxPayloadBytes = 4;
-    g.maxAttributeBytes = 8;
-    g.globalBindings.layouts = {m.gatherLayout};
-    g.globalBindings.pushConstantBytes = 4;
-    g.debugName = "caustics.gather";
-    CAUSTICS_TRY(m.gatherState, d.createStateObject(g));
-    CAUSTICS_TRY(m.gatherTable, d.createShaderTable(rhi::ShaderTableDesc{m.gatherState}.setRayGen("rayGen").addMiss("miss").addHitGroup("spheres")));
+    CAUSTICS_CHECK(createBackwardPipelines(m));   // backward_trace/backward_pipeline.cpp
 
     // The top level over the spheres' bottom level: one instance, rebuilt after it every frame.
     rhi::AccelStructDesc tlas;
@@ -154,10 +78,10 @@ Status CausticResources::Impl::ensureScenePipelines(const rhi::BindingLayoutHand
     gp.depthFormat = rhi::Format::D32_FLOAT;
     gp.debugName = "caustics.maps";
     CAUSTICS_TRY(mapPipeline, d.createGraphicsPipeline(gp));
-    CAUSTICS_TRY(emitterPipeline, compute(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout},
+    CAUSTICS_TRY(emitterPipeline, createPassComputePipeline(d, "caustic_maps/emitters.comp", {sceneLayout, emitterLayout},
                                           sizeof(shader::EmittersParams)));
     CAUSTICS_CHECK(createForwardState(*this, sceneLayout));   // forward_trace/forward_pipeline.cpp
-    CAUSTICS_CHECK(sceneTraceState(d, "backward_trace/backward.rgen", kBackwardPushBytes, sceneLayout, backwardLayout, backwardState, backwardTable));
+    CAUSTICS_CHECK(createBackwardState(*this, sceneLayout));   // backward_trace/backward_pipeline.cpp
     sceneLayoutSeen = sceneLayout.get();
     return okStatus();
 }

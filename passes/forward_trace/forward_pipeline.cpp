@@ -1,5 +1,5 @@
 // caustics.forward's pipeline: its binding layout (set 1, from forward_bindings.h) and its ray-tracing
-// state over the scene (forward*.rgen + trace.rmiss / trace.rchit), the variant the device's atomics
+// state over the scene (forward*.rgen + scene_trace's trace.rmiss / trace.rchit), the variant the device's atomics
 // allow (docs/caustics.md, "Fixed point").
 #include "caustic_maps/caustic_internal.h"
 #include "forward_trace/forward_bindings.h"

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "caustics/pass_shaders.h"
+
 namespace caustics {
 namespace {
 
@@ -101,6 +103,17 @@ Result<rhi::BindingSetDesc> PassBindingSet::desc() const {
     std::string message = std::string(pass_->name) + " bindings (set " + std::to_string(set_) + "):";
     for (const std::string& e : errors) message += " " + e + ";";
     return makeError(message);
+}
+
+Result<rhi::ComputePipelineHandle> createPassComputePipeline(rhi::IDevice& device, const char* shader,
+                                                             std::vector<rhi::BindingLayoutHandle> layouts, uint32_t pushBytes) {
+    rhi::ComputePipelineDesc desc;
+    CAUSTICS_TRY(desc.shader.code, pass_shaders::shaderCode(device.backend(), shader));
+    desc.shader.stage = rhi::ShaderStage::Compute;
+    desc.bindings.layouts = std::move(layouts);
+    desc.bindings.pushConstantBytes = pushBytes;
+    desc.debugName = shader;
+    return device.createComputePipeline(desc);
 }
 
 }  // namespace caustics

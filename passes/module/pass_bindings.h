@@ -15,6 +15,11 @@ namespace caustics {
 Result<rhi::BindingLayoutHandle> createPassBindingLayout(rhi::IDevice& device, const shader_bindings::PassBindings& pass,
                                                          uint32_t set, rhi::ShaderStage visibility);
 
+// The compute pipeline of a pass's shader entry (its pass_shaders name, "<pass>/<x>.comp") over the
+// layouts of sets 0, 1, ... and `pushBytes` of push constants.
+Result<rhi::ComputePipelineHandle> createPassComputePipeline(rhi::IDevice& device, const char* shader,
+                                                             std::vector<rhi::BindingLayoutHandle> layouts, uint32_t pushBytes);
+
 // The items of one binding set, by name. A name the pass does not declare in this set, a resource of
 // the wrong kind, or a declared binding left out makes desc() an error naming the pass and the binding.
 class PassBindingSet {

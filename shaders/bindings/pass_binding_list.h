@@ -18,7 +18,10 @@
 #include "forward_trace/forward_bindings.h"
 #include "gbuffer/gbuffer_bindings.h"
 #include "gbuffer/remap_object_ids_bindings.h"
+#include "backward_trace/backward_bindings.h"
+#include "backward_trace/gather_bindings.h"
 #include "backward_trace/second_type_guides_bindings.h"
+#include "backward_trace/specular_pixels_bindings.h"
 #include "backward_trace/second_type_guide_fill_bindings.h"
 #include "caustic_filter/combine_types_bindings.h"
 
@@ -32,6 +35,8 @@ inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRema
                                                      &kEmittersBindings, &kCausticMapBindings,
                                                      &kDirectLightingBindings, &kGBufferBindings,
                                                      &kSecondTypeGuidesBindings, &kSecondTypeGuideFillBindings,
-                                                     &kCombineTypesBindings, &kCausticsOutputBindings};
+                                                     &kCombineTypesBindings, &kCausticsOutputBindings,
+                                                     &kBackwardBindings, &kGatherBindings, &kGatherFixedBindings,
+                                                     &kGatherFixed64Bindings, &kSpecularPixelsBindings};
 
 }  // namespace caustics::shader_bindings

@@ -31,7 +31,7 @@ struct CausticSphere {      // 64 bytes
     float3 outgoing;      float pad;   // unit, from the receiver back along the camera path (BRDF wo)
 };
 
-// Closest-hit payload of the scene traces (forward_trace/trace.rchit, trace.rmiss): t < 0 = miss.
+// Closest-hit payload of the scene traces (scene_trace/trace.rchit, trace.rmiss): t < 0 = miss.
 struct TracePayload {
     float2 barycentrics;
     uint instance;

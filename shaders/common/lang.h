@@ -10,6 +10,7 @@
 //    file-scope constants CAUSTICS_CONST;
 //  - no matrices in shared code (row/column conventions differ) except float4x4 transforms applied
 //    through mat4Mul / mat3Mul (below), no recursion, no pointers;
+//  - bit casts are HLSL's asuint(float) / asfloat(uint);
 //  - the C++ spelling lives in namespace caustics::shader (CAUSTICS_SHARED_BEGIN/END).
 // The HLSL branch is deliberately minimal: Debian 12 has no dxc, so it is not compiled in CI.
 
@@ -22,6 +23,7 @@
 #endif
 
 #if defined(CAUSTICS_LANG_CPP)
+#include <bit>
 #include <cstdint>
 #include <glm/glm.hpp>
 
@@ -73,6 +75,9 @@ inline float3 lerp(float3 a, float3 b, float t) { return glm::mix(a, b, t); }
 inline float2 splat2(float x) { return float2(x); }
 inline float3 splat3(float x) { return float3(x); }
 inline float3 toFloat3(float4 v) { return float3(v); }
+// HLSL's bit casts of one 32-bit scalar (GLSL floatBitsToUint / uintBitsToFloat).
+inline uint asuint(float x) { return std::bit_cast<uint>(x); }
+inline float asfloat(uint x) { return std::bit_cast<float>(x); }
 }  // namespace caustics::shader
 
 #elif defined(CAUSTICS_LANG_HLSL)
@@ -109,6 +114,8 @@ inline float3 toFloat3(float4 v) { return float3(v); }
 #define saturate(x) clamp(x, 0.0f, 1.0f)
 #define mul(m, v) ((m) * (v))
 #define atan2(y, x) atan(y, x)
+#define asuint(x) floatBitsToUint(x)
+#define asfloat(x) uintBitsToFloat(x)
 #endif
 
 CAUSTICS_SHARED_BEGIN

@@ -7,8 +7,8 @@
 // stays 1), and at the first diffuse receiver stores the hit for the second type's gather and splats
 // its first-type radiance into the camera pixel the G-buffer confirms (paper Figure 4b).
 // Entries: forward.rgen / forward_fixed.rgen / forward_fixed64.rgen (float, 32-bit and 64-bit
-// fixed-point radiance atomics; docs/caustics.md, "Fixed point"), forward*.hlsl; trace.rchit,
-// trace.rmiss, trace.hlsl.
+// fixed-point radiance atomics; docs/caustics.md, "Fixed point"), forward*.hlsl; the scene trace's hit
+// and miss are passes/scene_trace/shaders/trace.rchit, trace.rmiss, trace.hlsl.
 #include "common/bsdf.h"
 #include "common/camera.h"
 #include "common/caster_motion.h"
@@ -117,9 +117,8 @@ CAUSTICS_SHARED_END
 
 #include "common/scene_trace.h"
 
-// The radiance atomics: one file per API under the same name (shaders/vulkan|d3d12/forward_trace/).
-#define RADIANCE_DECLARED
-#include "forward_trace/radiance_atomics.h"
+// The radiance atomics (float, or 32-/64-bit fixed point) on the generated radianceWords.
+#include "common/radiance_atomics.h"
 #if defined(CAUSTICS_LANG_GLSL)
 #define FORWARD_COUNT_EMITTED(layer) atomicAdd(plans[layer].emitted, 1u)
 #else

@@ -31,11 +31,11 @@ namespace caustics {
 
 // Lights with a statistics slot (shaders/common/caustic_stats.h).
 using shader::kMaxCausticLights;
-// Layers of the map array: the emitter list packs the layer in 6 bits (emitter_list.glsl).
+// Layers of the map array: the emitter list packs the layer in 6 bits (common/caustic_map.h).
 inline constexpr uint32_t kMaxCausticLayers = 64;
 inline constexpr float kWideHalfAngle = 1.3089969f;   // 75 degrees
 
-// std430 mirror: shaders/vulkan/caustic_maps/caustic_map.glsl (176 bytes).
+// std430 mirror: shaders/common/caustic_map.h (176 bytes).
 struct CausticMapGpu {
     glm::vec3 origin{0.0f};   // perspective: light position; orthographic: centre of the map plane
     uint32_t light = 0;       // scene light index

@@ -58,7 +58,7 @@ using shader::kStatSplats;
 using shader::kStatStoredHitAttempts;
 
 // One stored forward diffuse hit (std430, 64 bytes; GLSL mirror CausticHitRecord in
-// forward_trace/caustic_hit.glsl). It carries the photon's flux, its incoming direction and the
+// shaders/common/caustic_hit.h). It carries the photon's flux, its incoming direction and the
 // receiver's glTF BRDF parameters, so a gather evaluates the same BRDF as the splat and direct
 // lighting (shaders/common/bsdf.h). The two directions are octahedral snorm16 x 2 (80 -> 64 bytes,
 // docs/caustics.md "Memory"); causticHitNormal / causticHitIncoming decode them.

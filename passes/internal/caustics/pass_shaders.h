@@ -2,8 +2,7 @@
 // Shader code of every pass for the device's backend, embedded into caustics_passes at build time:
 // SPIR-V compiled from the GLSL entries (passes/CMakeLists.txt) and HLSL text (compiled at run time by
 // the D3D12 backend). Looked up as "<pass>/<file>": a pass's own passes/<pass>/shaders/<file>
-// (docs/shaders.md), e.g. "composite/composite.comp", or shaders/vulkan/<pass>/<file> for the passes
-// not yet moved, e.g. "gbuffer/gbuffer.vert"; the HLSL entry of the same name mirrors it.
+// (docs/shaders.md), e.g. "composite/composite.comp"; the HLSL entry of the same name mirrors it.
 #include <cstdint>
 #include <span>
 #include <string_view>

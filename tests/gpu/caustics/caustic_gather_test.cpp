@@ -15,7 +15,7 @@
 namespace caustics::test {
 namespace {
 
-// flux x f_r of a stored hit towards wo, from the hit's fields (forward_trace/caustic_hit.glsl; the
+// flux x f_r of a stored hit towards wo, from the hit's fields (shaders/common/caustic_hit.h; the
 // directions decoded from their octahedral words as the gather decodes them).
 glm::vec3 reflectedFlux(const CausticHit& h, const glm::vec3& wo) {
     glm::vec2 mr = glm::unpackUnorm2x16(h.metallicRoughness);

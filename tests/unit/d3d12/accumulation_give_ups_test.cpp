@@ -51,7 +51,10 @@ TEST(AccumulationGiveUps, FloatCompareExchangeLoopCountsEachGiveUp) {
         const std::string text(hlsl::source(name));
         ASSERT_FALSE(text.empty()) << name;
         EXPECT_NE(text.find("InterlockedCompareExchange"), std::string::npos) << name << " is the float variant";
-        EXPECT_TRUE(std::regex_search(text, std::regex("if \\(!stored\\) stats\\.InterlockedAdd\\(4u \\* kStatAccumulationGiveUps")))
+        // The loop reports whether it stored (shaders/common/radiance_atomics.h), and a failure is counted.
+        EXPECT_TRUE(std::regex_search(text, std::regex("stored = original == expected;[^}]*\\}\\s*return stored;")))
+            << name << ": the loop must report a value it could not store";
+        EXPECT_TRUE(std::regex_search(text, std::regex("if \\(!radianceFloatAdd\\([^;]*\\)\\) statsAtomicAdd\\(kStatAccumulationGiveUps, 1u\\)")))
             << name << " must count contributions it could not store";
     }
 }

@@ -1,0 +1,4 @@
+// D3D12 entry of caustics.specularPixels; the body is specular_pixels.h (docs/shaders.md).
+#include "specular_pixels.h"
+[numthreads(8, 8, 1)]
+void main(uint3 id : SV_DispatchThreadID) { specularPixelsThread(id.xy); }
