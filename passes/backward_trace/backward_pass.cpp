@@ -11,7 +11,6 @@
 #include "backward_trace/shaders/backward.h"
 #include "backward_trace/shaders/gather.h"
 #include "caustic_maps/caustic_internal.h"
-#include "caustics/rhi/log.h"
 #include "module/pass_bindings.h"
 
 namespace caustics {
@@ -48,18 +47,13 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) mutable {
             CausticResources::Impl& r = *h.res;
-            auto desc = PassBindingSet(shader_bindings::kBackwardBindings, 1)
-                            .buffer("camera", ctx.buffer(h.camera))
-                            .buffer("spheres", ctx.buffer(h.spheres))
-                            .buffer("sphereAabbs", ctx.buffer(h.sphereAabbs))
-                            .buffer("stats", ctx.buffer(h.stats))
-                            .buffer("specularPixels", ctx.buffer(h.specularPixels))
-                            .desc();
-            if (!desc) {
-                log(LogLevel::Error, "caustics.backward: " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.backwardLayout, *desc);
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.backwardLayout, "caustics.backward",
+                PassBindingSet(shader_bindings::kBackwardBindings, 1)
+                    .buffer("camera", ctx.buffer(h.camera))
+                    .buffer("spheres", ctx.buffer(h.spheres))
+                    .buffer("sphereAabbs", ctx.buffer(h.sphereAabbs))
+                    .buffer("stats", ctx.buffer(h.stats))
+                    .buffer("specularPixels", ctx.buffer(h.specularPixels)));
             if (!set) return;
             push.sphereCapacity = *h.sphereCapacity;
             bindSceneTrace(ctx.cmd(), r.backwardState, r.backwardTable, sceneSet, set, push);
@@ -116,18 +110,13 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         return [=](rg::PassContext& ctx) {
             if (*h.sphereCapacity == 0) return;   // the TLAS was not built this frame
             CausticResources::Impl& r = *h.res;
-            auto desc = PassBindingSet(gatherBindings(r), 0)
-                            .accelStruct("sphereTlas", ctx.accelStruct(h.sphereTlas))
-                            .buffer("spheres", ctx.buffer(h.spheres))
-                            .buffer("hits", ctx.buffer(h.hits))
-                            .buffer("stats", ctx.buffer(h.stats))
-                            .buffer("radianceWords", ctx.buffer(h.secondTypeTarget()))
-                            .desc();
-            if (!desc) {
-                log(LogLevel::Error, "caustics.gather: " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gatherLayout, *desc);
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gatherLayout, "caustics.gather",
+                PassBindingSet(gatherBindings(r), 0)
+                    .accelStruct("sphereTlas", ctx.accelStruct(h.sphereTlas))
+                    .buffer("spheres", ctx.buffer(h.spheres))
+                    .buffer("hits", ctx.buffer(h.hits))
+                    .buffer("stats", ctx.buffer(h.stats))
+                    .buffer("radianceWords", ctx.buffer(h.secondTypeTarget())));
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setRayTracingState(r.gatherState, r.gatherTable);

@@ -46,12 +46,7 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SecondTypeG
         .texture("depthMotion", ctx.texture(g.depthMotion))
         .texture("normal", ctx.texture(g.normal))
         .texture("objectId", ctx.texture(g.objectId));
-    auto desc = set.desc();
-    if (!desc) {
-        log(LogLevel::Error, "caustics.secondTypeGuides: " + desc.message());
-        return;
-    }
-    rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideLayout, *desc);
+    rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideLayout, "caustics.secondTypeGuides", set);
     if (!bound) return;
     const shader::SecondTypeGuideParams push{{h.width, h.height}, *h.sphereCapacity, clear ? 1u : 0u};
     rhi::ICommandList& cmd = ctx.cmd();
@@ -73,20 +68,15 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SecondTypeGuides
         SecondTypeGuides out = g;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *fr.res;
-            auto desc = PassBindingSet(shader_bindings::kSecondTypeGuideFillBindings, 0)
-                            .texture("sphereDepthMotion", ctx.texture(in[0]))
-                            .texture("sphereNormal", ctx.texture(in[1]))
-                            .texture("sphereObjectId", ctx.texture(in[2]))
-                            .texture("cameraObjectId", ctx.texture(in[3]))
-                            .texture("depthMotion", ctx.texture(out.depthMotion))
-                            .texture("normal", ctx.texture(out.normal))
-                            .texture("objectId", ctx.texture(out.objectId))
-                            .desc();
-            if (!desc) {
-                log(LogLevel::Error, "caustics.secondTypeGuides.fill: " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideFillLayout, *desc);
+            rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideFillLayout, "caustics.secondTypeGuides.fill",
+                PassBindingSet(shader_bindings::kSecondTypeGuideFillBindings, 0)
+                    .texture("sphereDepthMotion", ctx.texture(in[0]))
+                    .texture("sphereNormal", ctx.texture(in[1]))
+                    .texture("sphereObjectId", ctx.texture(in[2]))
+                    .texture("cameraObjectId", ctx.texture(in[3]))
+                    .texture("depthMotion", ctx.texture(out.depthMotion))
+                    .texture("normal", ctx.texture(out.normal))
+                    .texture("objectId", ctx.texture(out.objectId)));
             if (!bound) return;
             const shader::SecondTypeGuideFillParams push{{fr.width, fr.height}};
             rhi::ICommandList& cmd = ctx.cmd();

@@ -8,7 +8,6 @@
 #include "backward_trace/shaders/specular_pixels.h"
 #include "backward_trace/specular_pixels_bindings.h"
 #include "caustic_maps/caustic_internal.h"
-#include "caustics/rhi/log.h"
 #include "module/pass_bindings.h"
 
 namespace caustics {
@@ -34,18 +33,13 @@ void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
             *h.sphereCapacity = chooseSphereCapacity(r, *h.sphereReadback, h.width, h.height, h.sphereAllocation);
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.fillBuffer(ctx.buffer(h.sphereAabbs), 0);   // every slot the BLAS build reads
-            auto desc = PassBindingSet(shader_bindings::kSpecularPixelsBindings, 0)
-                            .texture("gObjectId", ctx.texture(objectId))
-                            .texture("gOptics", ctx.texture(optics))
-                            .buffer("specularPixels", ctx.buffer(h.specularPixels))
-                            .buffer("args", ctx.buffer(h.backwardArgs))
-                            .buffer("stats", ctx.buffer(h.stats))
-                            .desc();
-            if (!desc) {
-                log(LogLevel::Error, "caustics.specularPixels: " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.specularPixelLayout, *desc);
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.specularPixelLayout, "caustics.specularPixels",
+                PassBindingSet(shader_bindings::kSpecularPixelsBindings, 0)
+                    .texture("gObjectId", ctx.texture(objectId))
+                    .texture("gOptics", ctx.texture(optics))
+                    .buffer("specularPixels", ctx.buffer(h.specularPixels))
+                    .buffer("args", ctx.buffer(h.backwardArgs))
+                    .buffer("stats", ctx.buffer(h.stats)));
             if (!set) return;
             const shader::SpecularPixelParams push{h.width, h.height, *h.sphereCapacity};
             cmd.setComputePipeline(r.specularPixelPipeline);

@@ -157,9 +157,11 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         rg::RgTexture guide = ff.guide;
         const float pre = ff.preExposure;
         const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f,
-                                             motionGuides ? 1u : 0u, f.casterMotion && !motionGuides ? 1u : 0u};
+                                             motionGuides ? 1u : 0u, f.casterMotion && !motionGuides ? 1u : 0u,
+                                             f.objectMotion && !motionGuides ? 1u : 0u, f.plan.instanceCount};
         f.casterMotionWords = b.read(f.casterMotionWords, rg::Access::SampledRead);
-        const rg::RgBuffer casterMotion = f.casterMotionWords;
+        f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
+        const rg::RgBuffer casterMotion = f.casterMotionWords, instanceRows = f.instanceMotionRows;
         return [=](rg::PassContext& ctx) {
             // Only if the last EXECUTED frame wrote the copy this one reads (a dropped graph breaks it),
             // with the pre-exposure that frame stored it with.
@@ -180,7 +182,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
                                                        .texture("outColor", ctx.texture(o.color))
                                                        .texture("outGuides", ctx.texture(o.guides))
                                                        .texture("outFilterGuide", ctx.texture(guide))
-                                                       .buffer("casterMotion", ctx.buffer(casterMotion)),
+                                                       .buffer("casterMotion", ctx.buffer(casterMotion))
+                                                       .buffer("instanceMotion", ctx.buffer(instanceRows)),
                                                    push, t.args);
             if (recorded) {
                 // Committed when recorded, not when the graph was built: this frame's copy is the next

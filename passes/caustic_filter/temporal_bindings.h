@@ -18,6 +18,7 @@ inline constexpr Binding kCausticTemporalBindingList[] = {
     {"outGuides", Kind::StorageTexture, 0, 10, "uint2", ImageFormat::Rg32ui},    // this frame's pool
     {"outFilterGuide", Kind::StorageTexture, 0, 11, "uint4", ImageFormat::Rgba32ui},   // the a-trous guide
     {"casterMotion", Kind::StorageBufferRO, 0, 12, "uint"},      // caustics.forward's sums (common/caster_motion.h)
+    {"instanceMotion", Kind::StorageBufferRO, 0, 13, "float4"},  // 3 rows per instance (common/caster_motion.h)
 };
 
 inline constexpr PassBindings kCausticTemporalBindings{"caustic_temporal", "passes/caustic_filter/temporal_bindings.h",

@@ -1,4 +1,4 @@
-// casterMotionRows (caustic_internal.h; docs/caustics.md "Moving casters").
+// instanceMotion (caustic_internal.h; docs/caustics.md "Moving casters", "Moving objects").
 #include <cmath>
 
 #include "caustic_maps/caustic_internal.h"
@@ -6,7 +6,7 @@
 
 namespace caustics {
 
-std::vector<glm::vec4> casterMotionRows(CasterMotionState& state, const scene::Scene& scene, uint32_t frameIndex) {
+InstanceMotion instanceMotion(CasterMotionState& state, const scene::Scene& scene, uint32_t frameIndex) {
     if (state.frame != frameIndex) {
         state.previous = std::move(state.current);
         state.current.clear();
@@ -15,19 +15,21 @@ std::vector<glm::vec4> casterMotionRows(CasterMotionState& state, const scene::S
     }
     const size_t n = state.current.size();
     if (state.previous.size() != n || n != scene.instances.size()) return {};
-    std::vector<glm::vec4> rows(shader::kCasterMotionRowsPerInstance * n);
-    bool casterMoved = false;
+    InstanceMotion motion;
+    motion.rows.resize(shader::kCasterMotionRowsPerInstance * n);
+    bool moved = false;
     for (size_t i = 0; i < n; ++i) {
         // The transform is the same product in both frames when nothing moved: compare, then build.
         const glm::mat4 toPrevious = state.previous[i] * glm::inverse(state.current[i]);
         const glm::mat4 t = glm::transpose(toPrevious);   // rows of the 3x4 as columns of the transpose
-        for (uint32_t r = 0; r < shader::kCasterMotionRowsPerInstance; ++r) rows[shader::kCasterMotionRowsPerInstance * i + r] = t[int(r)];
+        for (uint32_t r = 0; r < shader::kCasterMotionRowsPerInstance; ++r) motion.rows[shader::kCasterMotionRowsPerInstance * i + r] = t[int(r)];
         if (state.previous[i] == state.current[i]) continue;
+        moved = true;
         const scene::Mesh& mesh = scene.meshes[scene.instances[i].mesh];
-        if (mesh.material < scene.materials.size() && scene.materials[mesh.material].isSpecular()) casterMoved = true;
+        if (mesh.material < scene.materials.size() && scene.materials[mesh.material].isSpecular()) motion.casterMoved = true;
     }
-    if (!casterMoved) return {};
-    return rows;
+    if (!moved) return {};
+    return motion;
 }
 
 Status CausticResources::Impl::ensureCasterMotion(uint32_t slot, uint64_t rowBytes, uint64_t wordBytes) {

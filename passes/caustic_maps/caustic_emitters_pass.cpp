@@ -36,19 +36,14 @@ void addEmitterPass(rg::RenderGraph& graph, CausticFrame& f) {
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            auto desc = PassBindingSet(shader_bindings::kEmittersBindings, 1)
-                            .buffer("maps", ctx.buffer(h.maps))
-                            .texture("mapObjectIds", ctx.texture(h.mapIds))
-                            .buffer("emitters", ctx.buffer(h.emitters))
-                            .buffer("plans", ctx.buffer(h.layerPlans))
-                            .buffer("stats", ctx.buffer(h.stats))
-                            .buffer("owners", ctx.buffer(h.owners))
-                            .desc();
-            if (!desc) {
-                log(LogLevel::Error, "caustics.emitters: " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.emitterLayout, *desc);
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.emitterLayout, "caustics.emitters",
+                PassBindingSet(shader_bindings::kEmittersBindings, 1)
+                    .buffer("maps", ctx.buffer(h.maps))
+                    .texture("mapObjectIds", ctx.texture(h.mapIds))
+                    .buffer("emitters", ctx.buffer(h.emitters))
+                    .buffer("plans", ctx.buffer(h.layerPlans))
+                    .buffer("stats", ctx.buffer(h.stats))
+                    .buffer("owners", ctx.buffer(h.owners)));
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setComputePipeline(r.emitterPipeline);

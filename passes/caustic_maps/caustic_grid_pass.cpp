@@ -22,15 +22,10 @@ rg::RgBuffer addGridFromCountPass(rg::RenderGraph& graph, CausticFrame& f, const
         rg::RgBuffer out = grid;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            auto desc = PassBindingSet(shader_bindings::kGridFromCountBindings, 0)
-                            .buffer("counters", ctx.buffer(h.stats))
-                            .buffer("grid", ctx.buffer(out))
-                            .desc();
-            if (!desc) {
-                log(LogLevel::Error, std::string(name) + ": " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gridLayout, *desc);
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.gridLayout, name,
+                PassBindingSet(shader_bindings::kGridFromCountBindings, 0)
+                    .buffer("counters", ctx.buffer(h.stats))
+                    .buffer("grid", ctx.buffer(out)));
             if (!set) return;
             const shader::GridFromCountParams push{statSlot, cap, gateSlot};
             rhi::ICommandList& cmd = ctx.cmd();

@@ -10,6 +10,7 @@
 #include "caustic_filter/caustic_filter.h"
 #include "bindings/shader_binding.h"
 #include "caustics/caustic_passes.h"
+#include "module/pass_bindings.h"
 
 namespace caustics {
 
@@ -37,9 +38,14 @@ struct CasterMotionState {
     std::optional<uint32_t> frame;
 };
 // Per instance, the rows of prev x inverse(current) (a world point on the instance this frame -> where it
-// was last frame; shaders/common/caster_motion.h); empty when there is no last frame, the instances changed, or no specular
-// instance moved.
-std::vector<glm::vec4> casterMotionRows(CasterMotionState& state, const scene::Scene& scene, uint32_t frameIndex);
+// was last frame; shaders/common/caster_motion.h); empty when there is no last frame, the instances
+// changed, or no instance moved. casterMoved: a specular instance moved (the forward pass then carries
+// each photon's caster motion); any moved instance moves the history of the pixels that show it.
+struct InstanceMotion {
+    std::vector<glm::vec4> rows;
+    bool casterMoved = false;
+};
+InstanceMotion instanceMotion(CasterMotionState& state, const scene::Scene& scene, uint32_t frameIndex);
 
 struct CausticResources::Impl {
     rhi::IDevice* device = nullptr;
@@ -99,6 +105,10 @@ struct CausticResources::Impl {
     // Binding set for this frame (kept alive); null after logging the error.
     rhi::BindingSetHandle makeSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
                                   rhi::BindingSetDesc desc);
+    // The same from a pass's bindings filled by name (module/pass_bindings.h); an incomplete or wrong
+    // set is logged with the pass's name (e.g. "caustics.forward") and gives null.
+    rhi::BindingSetHandle makeSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout, const char* pass,
+                                  const PassBindingSet& bindings);
 };
 
 // Handles of one frame, filled pass by pass.
@@ -126,12 +136,13 @@ struct CausticFrame {
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereBlas, sphereTlas;
     SecondTypeGuides secondTypeGuides;   // caustics.secondTypeGuides (invalid without the second type)
-    // Caster motion (docs/caustics.md "Moving casters"): 3 rows per instance (casterMotionRows; empty when
-    // no specular instance moved),
-    // and the per-pixel sums the forward pass accumulates from them (4 words per pixel when moving,
-    // else a 16-byte placeholder the passes bind).
+    // Instance and caster motion (docs/caustics.md "Moving casters", "Moving objects"): 3 rows per instance
+    // (instanceMotion; empty when no instance moved), and the per-pixel sums the forward pass accumulates
+    // from them (4 words per pixel when a caster moved, else a 16-byte placeholder the passes bind).
+    // objectMotion: the temporal pass reprojects a moved instance's pixels with its rows.
     std::vector<glm::vec4> instanceMotion;
     bool casterMotion = false;
+    bool objectMotion = false;
     rg::RgBuffer instanceMotionRows, casterMotionWords;
     CausticMapPlan plan;
     // The buffer the second type accumulates into: its own, or the first type's (one for both).

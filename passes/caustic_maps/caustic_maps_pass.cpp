@@ -37,12 +37,8 @@ void addMapPass(rg::RenderGraph& graph, CausticFrame& f) {
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            auto desc = PassBindingSet(shader_bindings::kCausticMapBindings, 1).buffer("maps", ctx.buffer(h.maps)).desc();
-            if (!desc) {
-                log(LogLevel::Error, "caustics.maps: " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.mapLayout, *desc);
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.mapLayout, "caustics.maps",
+                PassBindingSet(shader_bindings::kCausticMapBindings, 1).buffer("maps", ctx.buffer(h.maps)));
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();
             for (uint32_t layer = 0; layer < layers; ++layer) {

@@ -44,7 +44,7 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
         // Caster motion (docs/caustics.md "Moving casters"): per-instance rows, and 4 words per pixel
         // (the displacement sums x, y, z in 1/kCasterMotionScale m, the photon count), imported from the
         // frame slot (addCausticPasses sized them).
-        const std::vector<glm::vec4> motionRows = f.casterMotion ? f.instanceMotion : std::vector<glm::vec4>();
+        const std::vector<glm::vec4> motionRows = f.instanceMotion;
         f.instanceMotionRows = b.write(f.instanceMotionRows, rg::Access::CopyDest);
         f.casterMotionWords = b.write(f.casterMotionWords, rg::Access::CopyDest);
         // The backward grid (specular pixels, 1, 1), counted up by caustics.specularPixels.
@@ -174,13 +174,16 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     f.fixedPointScale = fixedPointScale(f.wideFixedPoint, in.settings.exposure * in.scene->exposure);
     f.plan = std::move(plan);
     // Taken every frame (the next frame compares with it), used only by the filter's history.
-    f.instanceMotion = casterMotionRows(res->casterMotion, *in.scene, in.frameIndex);
-    f.casterMotion = in.settings.filter && in.settings.filterCasterMotion && !f.instanceMotion.empty() &&
-                     f.instanceMotion.size() == shader::kCasterMotionRowsPerInstance * size_t(f.plan.instanceCount);
+    InstanceMotion motion = instanceMotion(res->casterMotion, *in.scene, in.frameIndex);
+    const bool motionUsable = in.settings.filter && in.settings.filterCasterMotion && !motion.rows.empty() &&
+                              motion.rows.size() == shader::kCasterMotionRowsPerInstance * size_t(f.plan.instanceCount);
+    f.objectMotion = motionUsable;
+    f.casterMotion = motionUsable && motion.casterMoved;
+    f.instanceMotion = motionUsable ? std::move(motion.rows) : std::vector<glm::vec4>();
 
-    // The slot's caster motion buffers: 16 bytes (bound, unread) unless a caster moved.
+    // The slot's motion buffers: 16 bytes (bound, unread) unless an instance (rows) or a caster (words) moved.
     const uint64_t motionWordBytes = f.casterMotion ? uint64_t(f.width) * f.height * 4 * shader::kCasterMotionWords : 16;
-    CAUSTICS_CHECK(res->ensureCasterMotion(slot, f.casterMotion ? f.instanceMotion.size() * 16 : 16, motionWordBytes));
+    CAUSTICS_CHECK(res->ensureCasterMotion(slot, f.objectMotion ? f.instanceMotion.size() * 16 : 16, motionWordBytes));
     f.instanceMotionRows = graph.importBuffer("caustics.instanceMotion", res->casterMotionRowBuffers[slot],
                                               rhi::ResourceState::Common, rhi::ResourceState::Common);
     f.casterMotionWords = graph.importBuffer("caustics.casterMotion", res->casterMotionWordBuffers[slot],

@@ -128,4 +128,14 @@ rhi::BindingSetHandle CausticResources::Impl::makeSet(rhi::IDevice& d, const rhi
     return set.value();
 }
 
+rhi::BindingSetHandle CausticResources::Impl::makeSet(rhi::IDevice& d, const rhi::BindingLayoutHandle& l, const char* pass,
+                                                      const PassBindingSet& bindings) {
+    auto desc = bindings.desc();
+    if (!desc) {
+        log(LogLevel::Error, std::string(pass) + ": " + desc.message());
+        return nullptr;
+    }
+    return makeSet(d, l, *desc);
+}
+
 }  // namespace caustics

@@ -36,16 +36,11 @@ void addPhotonPlanPass(rg::RenderGraph& graph, CausticFrame& f) {
         CausticFrame h = f;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            auto desc = PassBindingSet(shader_bindings::kPhotonPlanBindings, 0)
-                            .buffer("mapWords", ctx.buffer(h.maps))
-                            .buffer("plans", ctx.buffer(h.layerPlans))
-                            .buffer("args", ctx.buffer(h.forwardArgs))
-                            .desc();
-            if (!desc) {
-                log(LogLevel::Error, "caustics.photonPlan: " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.photonPlanLayout, *desc);
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.photonPlanLayout, "caustics.photonPlan",
+                PassBindingSet(shader_bindings::kPhotonPlanBindings, 0)
+                    .buffer("mapWords", ctx.buffer(h.maps))
+                    .buffer("plans", ctx.buffer(h.layerPlans))
+                    .buffer("args", ctx.buffer(h.forwardArgs)));
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setComputePipeline(r.photonPlanPipeline);

@@ -54,25 +54,20 @@ void addForwardPass(rg::RenderGraph& graph, CausticFrame& f) {
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *h.res;
-            auto desc = PassBindingSet(forwardBindings(r), 1)
-                            .buffer("camera", ctx.buffer(h.camera))
-                            .buffer("maps", ctx.buffer(h.maps))
-                            .buffer("emitters", ctx.buffer(h.emitters))
-                            .texture("gLinearDepth", ctx.texture(linearDepth))
-                            .texture("gObjectId", ctx.texture(objectId))
-                            .buffer("radianceWords", ctx.buffer(h.radiance1))
-                            .buffer("hits", ctx.buffer(h.hits))
-                            .buffer("stats", ctx.buffer(h.stats))
-                            .buffer("plans", ctx.buffer(h.layerPlans))
-                            .buffer("owners", ctx.buffer(h.owners))
-                            .buffer("instanceMotion", ctx.buffer(h.instanceMotionRows))
-                            .buffer("casterMotion", ctx.buffer(h.casterMotionWords))
-                            .desc();
-            if (!desc) {
-                log(LogLevel::Error, "caustics.forward: " + desc.message());
-                return;
-            }
-            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.forwardLayout, *desc);
+            rhi::BindingSetHandle set = r.makeSet(*ctx.device(), r.forwardLayout, "caustics.forward",
+                PassBindingSet(forwardBindings(r), 1)
+                    .buffer("camera", ctx.buffer(h.camera))
+                    .buffer("maps", ctx.buffer(h.maps))
+                    .buffer("emitters", ctx.buffer(h.emitters))
+                    .texture("gLinearDepth", ctx.texture(linearDepth))
+                    .texture("gObjectId", ctx.texture(objectId))
+                    .buffer("radianceWords", ctx.buffer(h.radiance1))
+                    .buffer("hits", ctx.buffer(h.hits))
+                    .buffer("stats", ctx.buffer(h.stats))
+                    .buffer("plans", ctx.buffer(h.layerPlans))
+                    .buffer("owners", ctx.buffer(h.owners))
+                    .buffer("instanceMotion", ctx.buffer(h.instanceMotionRows))
+                    .buffer("casterMotion", ctx.buffer(h.casterMotionWords)));
             if (!set) return;
             bindSceneTrace(ctx.cmd(), r.forwardState, r.forwardTable, sceneSet, set, push);
             if (indirect) ctx.cmd().dispatchRaysIndirect(ctx.buffer(h.forwardArgs));

@@ -93,14 +93,20 @@ float3 sceneBaseColor(GpuMaterial m, float2 uv);
 CAUSTICS_SHARED_END
 
 CAUSTICS_SHARED_BEGIN
+// The scene vertex indices of triangle `primitive` of instance `inst` (its index range is relative to
+// firstVertex).
+CAUSTICS_FN uint3 sceneTriangle(GpuInstance inst, uint primitive) {
+    uint base = inst.firstIndex + 3u * primitive;
+    return uint3(inst.firstVertex + sceneIndex(base), inst.firstVertex + sceneIndex(base + 1u),
+                 inst.firstVertex + sceneIndex(base + 2u));
+}
+
 // instance: the hit's instance index (GLSL gl_InstanceCustomIndexEXT, HLSL InstanceID()); primitive:
 // its triangle; barycentrics: the hit attribute (b1, b2), weights (1 - b1 - b2, b1, b2).
 CAUSTICS_FN SurfaceHit sceneSurfaceHit(uint instance, uint primitive, float2 barycentrics) {
     GpuInstance inst = sceneInstance(instance);
-    uint base = inst.firstIndex + 3u * primitive;
-    uint i0 = inst.firstVertex + sceneIndex(base);
-    uint i1 = inst.firstVertex + sceneIndex(base + 1u);
-    uint i2 = inst.firstVertex + sceneIndex(base + 2u);
+    uint3 tri = sceneTriangle(inst, primitive);
+    uint i0 = tri.x, i1 = tri.y, i2 = tri.z;
     float3 w = float3(1.0f - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
 
     float3 p0 = scenePosition(i0), p1 = scenePosition(i1), p2 = scenePosition(i2);

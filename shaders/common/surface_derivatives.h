@@ -18,10 +18,8 @@ struct SurfaceDerivatives {
 
 CAUSTICS_FN SurfaceDerivatives sceneSurfaceDerivatives(uint instance, uint primitive, float2 barycentrics) {
     GpuInstance inst = sceneInstance(instance);
-    uint base = inst.firstIndex + 3u * primitive;
-    uint i0 = inst.firstVertex + sceneIndex(base);
-    uint i1 = inst.firstVertex + sceneIndex(base + 1u);
-    uint i2 = inst.firstVertex + sceneIndex(base + 2u);
+    uint3 tri = sceneTriangle(inst, primitive);
+    uint i0 = tri.x, i1 = tri.y, i2 = tri.z;
     float3 p0 = scenePosition(i0);
     float3 n0 = sceneVertex(i0).normal;
     float3 n1 = sceneVertex(i1).normal;

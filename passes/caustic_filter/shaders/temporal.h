@@ -27,11 +27,13 @@ struct TemporalParams {
     uint motionGuides;
     // 1: casterMotion holds this frame's caster motion sums (docs/caustics.md "Moving casters").
     uint casterMotion;
+    // 1: instanceMotion holds the rows of every instance (common/caster_motion.h): a pixel showing a moved
+    // instance takes its history from where that point was (docs/caustics.md "Moving objects").
+    uint objectMotion;
+    uint instanceCount;   // instances the rows cover
 };
 CAUSTICS_CONST float kTemporalRejectDeviations = 3.0f;
 CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;
-// History length cap where a moving caster carries the caustic (docs/caustics.md "Moving casters").
-CAUSTICS_CONST float kTemporalMovingHistory = 8.0f;   // SVGF's threshold for trusting the temporal moments
 
 // Relative linear-depth tolerance for a reprojected history tap up to one pixel away: 1 % plus the
 // depth change across two pixel footprints on a surface seen at the given angle (the same footprint

@@ -125,6 +125,13 @@ float4 temporalCasterShift(int2 p, int2 size) {
     return photons > 0u ? float4(float3(sum) / (kCasterMotionScale * float(photons)), 1.0f) : float4(0.0f, 0.0f, 0.0f, 0.0f);
 }
 
+// Where world point x on instance i was last frame (its rows of prev x inverse(current)).
+float3 temporalInstancePrevious(uint instance, float3 x) {
+    float4 p = float4(x, 1.0f);
+    uint r = kCasterMotionRowsPerInstance * instance;
+    return float3(dot(instanceMotionLoad(r), p), dot(instanceMotionLoad(r + 1u), p), dot(instanceMotionLoad(r + 2u), p));
+}
+
 // The history colour at texel-centre position base + f by Catmull-Rom (4x4 texels) instead of
 // bilinear: a caustic carried by a moving caster is resampled between texels every frame, and bilinear
 // resampling blurred a one-pixel focal line over three pixels in 16 frames (docs/caustics.md "Moving
@@ -180,6 +187,14 @@ void temporalThread(uint group, uint2 local) {
             float4 shift = temporalCasterShift(p, size);
             source += shift.xyz;
             carried = shift.w > 0.0f;
+        }
+        // A pixel that shows a moved instance (a glass ball and what is seen through it, a moving
+        // receiver) takes its history from where that point of the instance was, unless photons carried
+        // the caustic there from their caster (above). Still instances' rows are the identity.
+        if (!carried && params.objectMotion != 0u && params.motionGuides == 0u && id - 1u < params.instanceCount) {
+            source = temporalInstancePrevious(id - 1u, world);
+            float3 moved = source - world;
+            carried = dot(moved, moved) > 1e-10f;   // over 10 um: not rounding
         }
         float4 clip = mul(camera.prevViewProj, float4(source, 1.0f));
         float4 guide = CAUSTICS_TEXEL(gLinearDepth, p);

@@ -76,8 +76,9 @@ struct CausticsSettings {
     uint32_t filterMaxHistory = 32;
     // Reproject the caustic history with its caster's motion (docs/caustics.md "Moving casters"): when
     // a specular instance moved since the last frame, each photon carries where it would have landed
-    // under last frame's transform, and the temporal step follows that instead of the receiver. Off: a
-    // moving glass drags a trail that only the photon-count test clears.
+    // under last frame's transform, and the temporal step follows that instead of the receiver; a pixel
+    // that shows a moved instance (a glass ball and the caustic seen through it) follows that instance
+    // ("Moving objects"). Off: a moving glass drags a trail that only the photon-count test clears.
     bool filterCasterMotion = true;
     // Edge-aware a-trous iterations (steps 1, 2, 4, ...; 3 spans 29 pixels); 0 = temporal only. With the
     // Gaussian luminance weight a fourth and fifth iteration change the image by < 0.2 % (docs/caustics.md).

@@ -44,9 +44,10 @@ glm::mat4 sphereAt(const glm::mat4& rest, float n) {
     return glm::translate(glm::mat4(1.0f), glm::vec3(x, 0.0f, 0.0f)) * rest;
 }
 
-// The last of kFrames frames of the module (caustics output) with the sphere at sphereAt(n), or held
-// at the last pose when `still`.
-std::vector<glm::vec3> lastFrame(const rhi::DeviceHandle& device, const CausticsSettings& settings, bool still) {
+// The kFrames frames of the module (its caustics output as seen by `cam`) with the sphere at
+// sphereAt(n), or held at the last pose when `still`.
+std::vector<std::vector<glm::vec3>> framesOf(const rhi::DeviceHandle& device, const CausticsSettings& settings, bool still,
+                                             const scene::Camera& cam) {
     scene::Scene scene = spotSphereScene();
     const uint32_t sphere = sphereInstance(scene);
     const glm::mat4 rest = scene.instances[sphere].transform;
@@ -56,14 +57,32 @@ std::vector<glm::vec3> lastFrame(const rhi::DeviceHandle& device, const Caustics
     auto module = CausticsModule::create(device, scene, gpuScene.value(), settings);
     EXPECT_TRUE(module) << module.message();
     if (!module) return {};
-    const scene::Camera cam = spotSphereCamera();
     auto images = runModuleFrames(*device, *module.value(), kFrames, 2, [&](uint32_t n) {
         scene.instances[sphere].transform = sphereAt(rest, still ? float(kFrames - 1) : float(n));
         return std::vector<ViewRequest>{viewOf(cam, kSize, ModuleOutput::Caustics)};
     });
     EXPECT_TRUE(images) << images.message();
     if (!images) return {};
-    return images.value().back()[0].pixels;
+    std::vector<std::vector<glm::vec3>> frames;
+    for (const auto& frame : images.value()) frames.push_back(frame[0].pixels);
+    return frames;
+}
+
+std::vector<glm::vec3> lastFrame(const rhi::DeviceHandle& device, const CausticsSettings& settings, bool still,
+                                 const scene::Camera& cam = spotSphereCamera()) {
+    auto frames = framesOf(device, settings, still, cam);
+    return frames.empty() ? std::vector<glm::vec3>() : frames.back();
+}
+
+// The mean of the frames of a still sphere, unfiltered: every frame jitters the backward pass's pixel
+// rays anew, so their mean converges the second type too.
+std::vector<glm::vec3> stillMean(const rhi::DeviceHandle& device, const CausticsSettings& settings, const scene::Camera& cam) {
+    auto frames = framesOf(device, settings, true, cam);
+    if (frames.empty()) return {};
+    std::vector<glm::vec3> mean(frames[0].size(), glm::vec3(0.0f));
+    for (const auto& f : frames)
+        for (size_t i = 0; i < f.size(); ++i) mean[i] += f[i] / float(frames.size());
+    return mean;
 }
 
 // Bounds (the issue's): with caster motion the moving frame's L1 to the converged reference is at most
@@ -100,6 +119,60 @@ TEST_F(MovingCasterFilter, HistoryFollowsAMovingGlassSphere) {
     dumpLuminance("moving_caster_followed", followed, kSize, kSize, spot.value);
     dumpLuminance("moving_caster_receiver_only", receiverOnly, kSize, kSize, spot.value);
     EXPECT_LE(l1Followed, 0.8 * l1ReceiverOnly);
+    EXPECT_NEAR(peakFollowed / peakStill, 1.0, 0.1);
+}
+
+// The second type under a moving glass (issue 18): the camera straight above the sphere looks through it
+// at its focal spot, so most of the caustic in view is seen through the glass, and the pixels that show
+// the sphere take their history from where that point of the sphere was (the instance's own motion,
+// docs/caustics.md "Moving objects"). Reference: the mean of 16 unfiltered frames of the still sphere at
+// its last pose, 16 rays per texel each. Bounds as above (the issue's): L1 at most 0.8x that of the filter
+// that follows the camera only, peak within 10 % of the still sphere's. Measured (lavapipe, 2026-12-02,
+// "[ measured ]" lines), seeds 1 / 2 / 3: L1 0.283 / 0.326 / 0.258 against 0.505 / 0.521 / 0.462 following
+// the camera only (0.56x / 0.63x / 0.56x), peak ratio to the still case 1.039 / 0.933 / 1.007; energy
+// 1.07 / 1.15 / 1.08 of the reference against 1.26 / 1.29 / 1.20 (the trail); the test runs seed 1.
+TEST_F(MovingCasterFilter, SecondTypeThroughAMovingGlassKeepsItsHistory) {
+    scene::Camera above;
+    above.eye = {0.0f, 2.4f, 0.25f};
+    above.target = {0.0f, 0.0f, 0.0f};
+    above.verticalFovRadians = 0.5f;
+    above.nearPlane = 0.05f;
+    above.farPlane = 20.0f;
+    auto settings = [](bool motion) {
+        CausticsSettings s = movingSettings(motion);
+        s.secondType = true;
+        s.maxStoredHits = 1u << 16;
+        return s;
+    };
+    CausticsSettings reference = settings(true);
+    reference.filter = false;
+    reference.raysPerTexel = 16.0f;               // x 16 frames: 256 rays per texel
+    reference.maxStoredHits = 1u << 19;           // every photon's hit is gathered (262 k a frame)
+    reference.seed = 1000;
+    const std::vector<glm::vec3> ref = stillMean(device, reference, above);
+    ASSERT_EQ(ref.size(), size_t(kSize) * kSize);
+    const PeakLocation spot = brightest3x3(ref, kSize, kSize);
+    ASSERT_GT(spot.value, 0.0) << "no caustic in view";
+    const std::vector<glm::vec3> followed = lastFrame(device, settings(true), false, above);
+    const std::vector<glm::vec3> cameraOnly = lastFrame(device, settings(false), false, above);
+    const std::vector<glm::vec3> still = lastFrame(device, settings(true), true, above);
+    ASSERT_EQ(followed.size(), ref.size());
+    ASSERT_EQ(cameraOnly.size(), ref.size());
+    ASSERT_EQ(still.size(), ref.size());
+    const double l1Followed = relativeL1(followed, ref), l1CameraOnly = relativeL1(cameraOnly, ref);
+    const double peakFollowed = mean3x3(followed, kSize, kSize, spot.x, spot.y) / spot.value;
+    const double peakCameraOnly = mean3x3(cameraOnly, kSize, kSize, spot.x, spot.y) / spot.value;
+    const double peakStill = mean3x3(still, kSize, kSize, spot.x, spot.y) / spot.value;
+    std::printf("[ measured ] through glass, object motion  L1 %.4f  peak %.4f  energy %.4f\n", l1Followed, peakFollowed,
+                energy(followed) / energy(ref));
+    std::printf("[ measured ] through glass, camera only    L1 %.4f  peak %.4f  energy %.4f\n", l1CameraOnly, peakCameraOnly,
+                energy(cameraOnly) / energy(ref));
+    std::printf("[ measured ] through glass, still          L1 %.4f  peak %.4f  energy %.4f\n", relativeL1(still, ref), peakStill,
+                energy(still) / energy(ref));
+    dumpLuminance("moving_glass_reference", ref, kSize, kSize, spot.value);
+    dumpLuminance("moving_glass_followed", followed, kSize, kSize, spot.value);
+    dumpLuminance("moving_glass_camera_only", cameraOnly, kSize, kSize, spot.value);
+    EXPECT_LE(l1Followed, 0.8 * l1CameraOnly);
     EXPECT_NEAR(peakFollowed / peakStill, 1.0, 0.1);
 }
 

@@ -24,25 +24,33 @@ glm::vec3 applyRows(const std::vector<glm::vec4>& rows, size_t instance, glm::ve
     return {glm::dot(rows[r], h), glm::dot(rows[r + 1], h), glm::dot(rows[r + 2], h)};
 }
 
-// No rows on the first frame, nor when only a diffuse instance moved; a moved glass sphere gets rows
-// that take this frame's point to last frame's (the still floor's: to itself); a second view of the same frame sees the same.
-TEST(CasterMotion, RowsTakeThisFramesPointToLastFramesWhenACasterMoved) {
+// No rows on the first frame; a moved floor gets rows (the history of the pixels that show it follows
+// it) but is no moving caster; a moved glass sphere is, with rows that take this frame's point to last
+// frame's (the still floor's: to itself); a second view of the same frame sees the same; no rows once
+// nothing moves.
+TEST(CasterMotion, RowsTakeThisFramesPointToLastFramesWhenAnInstanceMoved) {
     scene::Scene s = scene::makeGlassSphereScene(scene::AnalyticSceneDesc{});
     const uint32_t glass = specularInstance(s);
     const uint32_t floor = glass == 0 ? 1 : 0;
     CasterMotionState state;
-    EXPECT_TRUE(casterMotionRows(state, s, 0).empty());
-    s.instances[floor].transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.1f, 0.0f)) * s.instances[floor].transform;
-    EXPECT_TRUE(casterMotionRows(state, s, 1).empty()) << "a moving receiver is no moving caster";
+    EXPECT_TRUE(instanceMotion(state, s, 0).rows.empty());
+    const glm::vec3 lift(0.0f, 0.1f, 0.0f);
+    s.instances[floor].transform = glm::translate(glm::mat4(1.0f), lift) * s.instances[floor].transform;
+    const InstanceMotion floorMoved = instanceMotion(state, s, 1);
+    EXPECT_FALSE(floorMoved.casterMoved) << "a moving receiver is no moving caster";
+    ASSERT_EQ(floorMoved.rows.size(), shader::kCasterMotionRowsPerInstance * s.instances.size());
+    const glm::vec3 p(0.3f, 0.7f, -0.2f);
+    EXPECT_NEAR(glm::length(applyRows(floorMoved.rows, floor, p) - (p - lift)), 0.0f, 1e-6f);
     const glm::vec3 step(0.02f, 0.0f, -0.01f);
     s.instances[glass].transform = glm::translate(glm::mat4(1.0f), step) * s.instances[glass].transform;
-    const std::vector<glm::vec4> rows = casterMotionRows(state, s, 2);
+    const InstanceMotion glassMoved = instanceMotion(state, s, 2);
+    EXPECT_TRUE(glassMoved.casterMoved);
+    const std::vector<glm::vec4>& rows = glassMoved.rows;
     ASSERT_EQ(rows.size(), shader::kCasterMotionRowsPerInstance * s.instances.size());
-    const glm::vec3 p(0.3f, 0.7f, -0.2f);
     EXPECT_NEAR(glm::length(applyRows(rows, glass, p) - (p - step)), 0.0f, 1e-6f);
     EXPECT_NEAR(glm::length(applyRows(rows, floor, p) - p), 0.0f, 1e-6f) << "the floor stood still since frame 1";
-    EXPECT_EQ(casterMotionRows(state, s, 2), rows) << "views of one frame share its motion";
-    EXPECT_TRUE(casterMotionRows(state, s, 3).empty()) << "nothing moved since frame 2";
+    EXPECT_EQ(instanceMotion(state, s, 2).rows, rows) << "views of one frame share its motion";
+    EXPECT_TRUE(instanceMotion(state, s, 3).rows.empty()) << "nothing moved since frame 2";
 }
 
 // A chain that moved along the floor moves the photon on the floor by as much; a chain that moved up
