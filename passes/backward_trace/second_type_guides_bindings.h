@@ -11,6 +11,9 @@ inline constexpr Binding kSecondTypeGuidesBindingList[] = {
     {"depthMotion", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba32f},
     {"normal", Kind::StorageTexture, 0, 4, "float4", ImageFormat::Rgba16f},
     {"objectId", Kind::StorageTexture, 0, 5, "uint", ImageFormat::R32ui},
+    {"gLinearDepth", Kind::SampledTexture, 0, 6, "float4"},      // the camera G-buffer's (the glass)
+    {"gObjectId", Kind::SampledTexture, 0, 7, "uint"},
+    {"instanceMotion", Kind::StorageBufferRO, 0, 8, "float4"},   // 3 rows per instance (common/caster_motion.h)
 };
 
 inline constexpr PassBindings kSecondTypeGuidesBindings{"second_type_guides", "passes/backward_trace/second_type_guides_bindings.h",

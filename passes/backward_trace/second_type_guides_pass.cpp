@@ -37,7 +37,9 @@ SecondTypeGuides createGuides(rg::PassBuilder& b, uint32_t w, uint32_t h, const 
 }
 
 // One dispatch of the guide pipeline over the image grid (clear: per pixel; else per sphere slot).
-void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SecondTypeGuides& g, bool clear) {
+// cameraDepth, cameraIds: the camera G-buffer's linear depth and object ids (the glass at the pixel).
+void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SecondTypeGuides& g, rg::RgTexture cameraDepth,
+                  rg::RgTexture cameraIds, bool clear) {
     CausticResources::Impl& r = *h.res;
     PassBindingSet set(shader_bindings::kSecondTypeGuidesBindings, 0);
     set.buffer("camera", ctx.buffer(h.camera))
@@ -45,10 +47,14 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SecondTypeG
         .buffer("counters", ctx.buffer(h.stats))
         .texture("depthMotion", ctx.texture(g.depthMotion))
         .texture("normal", ctx.texture(g.normal))
-        .texture("objectId", ctx.texture(g.objectId));
+        .texture("objectId", ctx.texture(g.objectId))
+        .texture("gLinearDepth", ctx.texture(cameraDepth))
+        .texture("gObjectId", ctx.texture(cameraIds))
+        .buffer("instanceMotion", ctx.buffer(h.instanceMotionRows));
     rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideLayout, "caustics.secondTypeGuides", set);
     if (!bound) return;
-    const shader::SecondTypeGuideParams push{{h.width, h.height}, *h.sphereCapacity, clear ? 1u : 0u};
+    const shader::SecondTypeGuideParams push{{h.width, h.height}, *h.sphereCapacity, clear ? 1u : 0u,
+                                             h.objectMotion ? 1u : 0u, h.plan.instanceCount};
     rhi::ICommandList& cmd = ctx.cmd();
     cmd.setComputePipeline(r.secondTypeGuidePipeline);
     cmd.setBindingSet(0, bound);
@@ -99,6 +105,10 @@ void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
             f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
             f.spheres = b.read(f.spheres, rg::Access::SampledRead);
             f.stats = b.read(f.stats, rg::Access::SampledRead);
+            // The glass the camera sees and its motion (docs/caustics.md "Moving objects").
+            const rg::RgTexture cameraDepth = b.read(f.in->gbuffer.linearDepth, rg::Access::SampledRead);
+            const rg::RgTexture cameraIds = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
+            f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
             if (clear) {
                 g = createGuides(b, w, h, "caustics.sphere");
             } else {
@@ -108,7 +118,7 @@ void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
             }
             CausticFrame fr = f;
             SecondTypeGuides out = g;
-            return [=](rg::PassContext& ctx) { recordGuides(ctx, fr, out, clear); };
+            return [=](rg::PassContext& ctx) { recordGuides(ctx, fr, out, cameraDepth, cameraIds, clear); };
         });
     }
     addFillPass(graph, f, g);

@@ -16,6 +16,12 @@ CAUSTICS_CONST uint kCasterMotionWords = 4u;
 // Per instance, the 3 rows of the 3x4 matrix prev x inverse(current) (this frame's pose to last frame's).
 CAUSTICS_CONST uint kCasterMotionRowsPerInstance = 3u;
 
+// Where world point x on an instance was last frame, from the instance's three rows r0..r2.
+CAUSTICS_FN float3 instanceRowsApply(float4 r0, float4 r1, float4 r2, float3 x) {
+    float4 p = float4(x, 1.0f);
+    return float3(dot(r0, p), dot(r1, p), dot(r2, p));
+}
+
 // Where a photon that reached receiver point r along `dir` would have landed last frame, minus r, when
 // the specular chain that sent it moved by `chainShift` since then (last frame's position of its last
 // moving vertex minus this frame's) and sent it in the same direction: last frame's photon left from

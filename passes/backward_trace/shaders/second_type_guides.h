@@ -9,6 +9,8 @@
 // depthMotion holds (depth, motion x, motion y, last frame's depth): the filter's temporal pass reads it
 // as its linear depth (.x) and, for the second type, reprojects with .yz and tests .w.
 // Entries: second_type_guides.comp, second_type_guides.hlsl; one pipeline, two dispatches (clearPass).
+#include "common/camera.h"
+#include "common/caster_motion.h"
 #include "common/resources.h"
 
 CAUSTICS_SHARED_BEGIN
@@ -41,11 +43,15 @@ struct GuideSphere {
     float pad;
 };
 
-// Push constants (second_type_guides_bindings.h), 16 bytes.
+// Push constants (second_type_guides_bindings.h), 24 bytes.
 struct SecondTypeGuideParams {
     uint2 size;            // the image, pixels
     uint sphereCapacity;   // the frame's sphere slots (caustics/sphere_capacity.h)
     uint clearPass;        // 1: zero every pixel's guides; 0: write each sphere's
+    // 1: instanceMotion holds every instance's rows (common/caster_motion.h): a pixel whose glass moved
+    // takes the glass's motion (docs/caustics.md "Moving objects").
+    uint objectMotion;
+    uint instanceCount;    // instances the rows cover
 };
 
 CAUSTICS_CONST uint kGuideSphereCountSlot = 3u;   // caustics.stats' kStatSpheres (caustic_passes.h)
@@ -86,6 +92,43 @@ CAUSTICS_FN SecondTypeGuide secondTypeGuide(GuideCamera c, GuideSphere s, float2
     return g;
 }
 
+// The camera as common/camera.h's pinhole (the guide camera is CameraConstants by columns).
+CAUSTICS_FN PinholeCamera guidePinhole(GuideCamera c, float2 size) {
+    PinholeCamera p;
+    p.eye = toFloat3(c.eye);
+    p.right = toFloat3(c.right);
+    p.up = toFloat3(c.up);
+    p.forward = toFloat3(c.forward);
+    p.tanHalfFovY = c.forward.w;
+    p.aspect = c.right.w;
+    p.width = size.x;
+    p.height = size.y;
+    return p;
+}
+
+// The surface the camera sees at pixel p's centre at linear depth `depth` (cameraWorldPosition, with the
+// host's jitter eye.w, up.w).
+CAUSTICS_FN float3 guideSurfacePoint(GuideCamera c, float2 size, int2 p, float depth) {
+    PinholeCamera pin = guidePinhole(c, size);
+    float3 d = cameraRayDirection(pin, float2(p) + 0.5f - float2(c.eye.w, c.up.w));
+    return pin.eye + d * (depth / dot(d, pin.forward));
+}
+
+// A receiver seen through a glass that moved (docs/caustics.md "Moving objects"): what the glass shows
+// moves with it, the lens and the caustic under it alike, so the guide's motion is the glass point's
+// (glassNow at this pixel, glassBefore where it was last frame, both world) and last frame's depth is
+// the receiver point's carried by the glass's motion (receiverBefore).
+CAUSTICS_FN SecondTypeGuide secondTypeGuideThroughMovedGlass(GuideCamera c, SecondTypeGuide g, float3 glassNow,
+                                                             float3 glassBefore, float3 receiverBefore, float2 size) {
+    float4 now = guideClip(c.viewProj[0], c.viewProj[1], c.viewProj[2], c.viewProj[3], glassNow);
+    float4 before = guideClip(c.prevViewProj[0], c.prevViewProj[1], c.prevViewProj[2], c.prevViewProj[3], glassBefore);
+    float4 receiver = guideClip(c.prevViewProj[0], c.prevViewProj[1], c.prevViewProj[2], c.prevViewProj[3], receiverBefore);
+    bool seen = before.w > 0.0f && now.w > 0.0f && receiver.w > 0.0f;
+    SecondTypeGuide r = g;
+    r.motion = seen ? guideTexel(before, size) - guideTexel(now, size) : splat2(kGuideNoHistory);
+    r.previousDepth = seen ? receiver.w : 0.0f;
+    return r;
+}
 CAUSTICS_SHARED_END
 
 #if !defined(CAUSTICS_LANG_CPP)
@@ -106,6 +149,17 @@ void secondTypeGuidesThread(uint2 id) {
     GuideSphere s = spheresLoad(slot);
     SecondTypeGuide g = secondTypeGuide(camera, s, float2(params.size));
     int2 p = int2(int(s.pixel % params.size.x), int(s.pixel / params.size.x));
+    uint glass = CAUSTICS_TEXEL_UINT(gObjectId, p);   // the instance the camera sees at the pixel, + 1
+    if (params.objectMotion != 0u && glass - 1u < params.instanceCount) {
+        uint r = kCasterMotionRowsPerInstance * (glass - 1u);
+        float4 r0 = instanceMotionLoad(r), r1 = instanceMotionLoad(r + 1u), r2 = instanceMotionLoad(r + 2u);
+        float3 glassNow = guideSurfacePoint(camera, float2(params.size), p, CAUSTICS_TEXEL(gLinearDepth, p).r);
+        float3 glassBefore = instanceRowsApply(r0, r1, r2, glassNow);
+        float3 moved = glassBefore - glassNow;
+        if (dot(moved, moved) > 1e-10f)   // over 10 um: not rounding
+            g = secondTypeGuideThroughMovedGlass(camera, g, glassNow, glassBefore, instanceRowsApply(r0, r1, r2, s.centre),
+                                                 float2(params.size));
+    }
     CAUSTICS_IMAGE_STORE(depthMotion, p, float4(g.linearDepth, g.motion.x, g.motion.y, g.previousDepth));
     CAUSTICS_IMAGE_STORE(normal, p, float4(g.normal, 0.0f));
     CAUSTICS_IMAGE_STORE_UINT(objectId, p, g.objectId);

@@ -127,9 +127,8 @@ float4 temporalCasterShift(int2 p, int2 size) {
 
 // Where world point x on instance i was last frame (its rows of prev x inverse(current)).
 float3 temporalInstancePrevious(uint instance, float3 x) {
-    float4 p = float4(x, 1.0f);
     uint r = kCasterMotionRowsPerInstance * instance;
-    return float3(dot(instanceMotionLoad(r), p), dot(instanceMotionLoad(r + 1u), p), dot(instanceMotionLoad(r + 2u), p));
+    return instanceRowsApply(instanceMotionLoad(r), instanceMotionLoad(r + 1u), instanceMotionLoad(r + 2u), x);
 }
 
 // The history colour at texel-centre position base + f by Catmull-Rom (4x4 texels) instead of

@@ -138,9 +138,8 @@ void addCasterMotion(uint pixel, float3 shift) {
 
 // Where world point x on instance i was last frame (its rows of prev x inverse(current)).
 float3 instancePreviousPosition(uint instance, float3 x) {
-    float4 p = float4(x, 1.0f);
     uint r = kCasterMotionRowsPerInstance * instance;
-    return float3(dot(instanceMotionLoad(r), p), dot(instanceMotionLoad(r + 1u), p), dot(instanceMotionLoad(r + 2u), p));
+    return instanceRowsApply(instanceMotionLoad(r), instanceMotionLoad(r + 1u), instanceMotionLoad(r + 2u), x);
 }
 
 void splatFirstType(CausticHit hit, float4 receiverShift) {

@@ -292,5 +292,30 @@ TEST(SecondTypeGuideBody, AReceiverBehindTheCameraGetsAPositiveDepthAndNoHistory
     EXPECT_EQ(g.previousDepth, 0.0f);
 }
 
+// Through a glass that moved (docs/caustics.md "Moving objects"): the motion is the glass point's, not the
+// receiver's (the glass, nearer the camera, moves by more pixels), and last frame's depth is the receiver's
+// carried by the glass's motion.
+TEST(SecondTypeGuideBody, ThroughAMovedGlassTheMotionIsTheGlasssAndTheDepthTheCarriedReceivers) {
+    GuideSphere s{};
+    s.centre = float3(0.1f, 0.0f, 0.0f);   // the receiver, 2 m from the camera
+    const glm::mat4 still = viewProjAt(0.0f);
+    const GuideCamera c = guideCamera(still, still);
+    const SecondTypeGuide g = secondTypeGuide(c, s, float2(64.0f, 64.0f));
+    EXPECT_NEAR(g.motion.x, 0.0f, 1e-4f);   // a still camera: no motion of its own
+    const float3 step(-0.05f, 0.0f, 0.0f);   // where the glass was last frame, minus where it is
+    const float3 glassNow(0.06f, 0.0f, 1.2f);   // 0.8 m from the camera
+    const SecondTypeGuide m = secondTypeGuideThroughMovedGlass(c, g, glassNow, glassNow + step, s.centre + step, float2(64.0f, 64.0f));
+    auto texel = [&](glm::vec3 x) {
+        glm::vec4 q = still * glm::vec4(x, 1.0f);
+        return (glm::vec2(q) / q.w * 0.5f + 0.5f) * 64.0f - 0.5f;
+    };
+    EXPECT_NEAR(m.motion.x, texel(glassNow + step).x - texel(glassNow).x, 1e-4f);
+    EXPECT_LT(m.motion.x, (texel(s.centre + step) - texel(s.centre)).x - 0.5f) << "the nearer glass moves further on screen";
+    EXPECT_NEAR(m.motion.y, 0.0f, 1e-4f);
+    EXPECT_NEAR(m.previousDepth, 2.0f, 1e-5f);   // the receiver moved along the image plane
+    EXPECT_EQ(m.linearDepth, g.linearDepth);
+    EXPECT_EQ(m.objectId, g.objectId);
+}
+
 }  // namespace
 }  // namespace caustics::shader
