@@ -5,8 +5,8 @@
 namespace caustics::shader_bindings {
 
 inline constexpr Binding kSecondTypeGuidesBindingList[] = {
-    {"camera", Kind::ConstantBuffer, 0, 0, "GuideCamera"},                       // caustics.camera
-    {"spheres", Kind::StorageBufferRO, 0, 1, "GuideSphere", ImageFormat::None, 64},   // caustics.spheres
+    {"camera", Kind::ConstantBuffer, 0, 0, "CameraConstants"},                     // caustics.camera (common/camera.h)
+    {"spheres", Kind::StorageBufferRO, 0, 1, "CausticSphere", ImageFormat::None, 64},   // caustics.spheres (common/caustic_hit.h)
     {"counters", Kind::StorageBufferRO, 0, 2, "uint"},                           // caustics.stats
     {"depthMotion", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba32f},
     {"normal", Kind::StorageTexture, 0, 4, "float4", ImageFormat::Rgba16f},

@@ -3,7 +3,6 @@
 // second_type_guide_fill.h; docs/caustics.md "Second-type guides"), written from this frame's spheres
 // (caustics.backward), then filled where a pixel's sample made none, so that the filter can run the
 // second type on the receiver seen through the glass instead of on the glass the camera G-buffer holds.
-#include <cstddef>
 #include <string>
 
 #include "backward_trace/second_type_guide_fill_bindings.h"
@@ -16,12 +15,6 @@
 
 namespace caustics {
 namespace {
-
-static_assert(sizeof(shader::GuideSphere) == sizeof(CausticSphere));
-static_assert(offsetof(shader::GuideSphere, pixel) == offsetof(CausticSphere, pixel));
-static_assert(sizeof(shader::GuideCamera) == sizeof(CameraConstants));
-static_assert(offsetof(shader::GuideCamera, prevViewProj) == offsetof(CameraConstants, prevViewProj));
-static_assert(shader::kGuideSphereCountSlot == kStatSpheres);
 
 // The three guide textures, created and written by the pass being built: <prefix>DepthMotion, Normal, ObjectId.
 SecondTypeGuides createGuides(rg::PassBuilder& b, uint32_t w, uint32_t h, const std::string& prefix) {

@@ -46,21 +46,23 @@ bool radianceFloatAdd(uint word, float value) {
 #if defined(CAUSTICS_FIXED_POINT_64)
 #define RadianceWord uint64_t
 #define RADIANCE_WORD_MAX 0xFFFFFFFFFFFFFFFFull
-RadianceWord radianceWordAdd(uint word, RadianceWord add) {
-    uint64_t old;
-    radianceWords.InterlockedAdd64(8u * word, add, old);
-    return old;
-}
-void radianceWordPin(uint word) { radianceWords.InterlockedMax64(8u * word, RADIANCE_WORD_MAX); }
+#define RADIANCE_WORD_BYTES 8u
+#define RADIANCE_INTERLOCKED_ADD InterlockedAdd64   // SM 6.6
+#define RADIANCE_INTERLOCKED_MAX InterlockedMax64
 #elif defined(CAUSTICS_FIXED_POINT)
 #define RadianceWord uint
 #define RADIANCE_WORD_MAX 0xFFFFFFFFu
+#define RADIANCE_WORD_BYTES 4u
+#define RADIANCE_INTERLOCKED_ADD InterlockedAdd
+#define RADIANCE_INTERLOCKED_MAX InterlockedMax
+#endif
+#if defined(CAUSTICS_FIXED_POINT) || defined(CAUSTICS_FIXED_POINT_64)
 RadianceWord radianceWordAdd(uint word, RadianceWord add) {
-    uint old;
-    radianceWords.InterlockedAdd(4u * word, add, old);
+    RadianceWord old;
+    radianceWords.RADIANCE_INTERLOCKED_ADD(RADIANCE_WORD_BYTES * word, add, old);
     return old;
 }
-void radianceWordPin(uint word) { radianceWords.InterlockedMax(4u * word, RADIANCE_WORD_MAX); }
+void radianceWordPin(uint word) { radianceWords.RADIANCE_INTERLOCKED_MAX(RADIANCE_WORD_BYTES * word, RADIANCE_WORD_MAX); }
 #else
 bool radianceFloatAdd(uint word, float value) {
     uint address = 4u * word;

@@ -11,37 +11,10 @@
 // Entries: second_type_guides.comp, second_type_guides.hlsl; one pipeline, two dispatches (clearPass).
 #include "common/camera.h"
 #include "common/caster_motion.h"
+#include "common/caustic_hit.h"
 #include "common/resources.h"
 
 CAUSTICS_SHARED_BEGIN
-
-// caustics::CameraConstants (passes/internal/caustics/camera_constants.h) with each matrix as its four
-// columns (the dialect has no matrices); `frame` holds uints and is not read here.
-struct GuideCamera {
-    float4 view[4];
-    float4 proj[4];
-    float4 viewProj[4];
-    float4 invViewProj[4];
-    float4 prevViewProj[4];
-    float4 eye;
-    float4 forward;
-    float4 right;
-    float4 up;
-    float4 clip;
-    float4 frame;
-};
-
-// caustics::CausticSphere (passes/internal/caustics/caustic_passes.h), 64 bytes.
-struct GuideSphere {
-    float3 centre;
-    float radius;
-    float3 transmittance;
-    uint objectId;
-    float3 normal;
-    uint pixel;
-    float3 outgoing;
-    float pad;
-};
 
 // Push constants (second_type_guides_bindings.h), 24 bytes.
 struct SecondTypeGuideParams {
@@ -54,7 +27,6 @@ struct SecondTypeGuideParams {
     uint instanceCount;    // instances the rows cover
 };
 
-CAUSTICS_CONST uint kGuideSphereCountSlot = 3u;   // caustics.stats' kStatSpheres (caustic_passes.h)
 // Motion of a receiver point that was behind last frame's camera: far off screen, so no history is found.
 CAUSTICS_CONST float kGuideNoHistory = -1.0e9f;
 // A receiver reached by a reflection can lie behind the camera (clip w <= 0): the filter divides by
@@ -69,9 +41,8 @@ struct SecondTypeGuide {
     uint objectId;
 };
 
-CAUSTICS_FN float4 guideClip(float4 c0, float4 c1, float4 c2, float4 c3, float3 x) {
-    return c0 * x.x + c1 * x.y + c2 * x.z + c3;
-}
+// A world point in clip space through `viewProj` (the camera's or last frame's).
+CAUSTICS_FN float4 guideClip(float4x4 viewProj, float3 x) { return mat4Mul(viewProj, float4(x, 1.0f)); }
 
 // Texel-centre coordinates of a clip-space point (pixel (i, j)'s centre is (i, j)), as the filter's
 // reprojection computes them (docs/caustics.md "Filter").
@@ -79,9 +50,9 @@ CAUSTICS_FN float2 guideTexel(float4 clip, float2 size) {
     return (float2(clip.x, clip.y) / clip.w * 0.5f + 0.5f) * size - 0.5f;
 }
 
-CAUSTICS_FN SecondTypeGuide secondTypeGuide(GuideCamera c, GuideSphere s, float2 size) {
-    float4 now = guideClip(c.viewProj[0], c.viewProj[1], c.viewProj[2], c.viewProj[3], s.centre);
-    float4 before = guideClip(c.prevViewProj[0], c.prevViewProj[1], c.prevViewProj[2], c.prevViewProj[3], s.centre);
+CAUSTICS_FN SecondTypeGuide secondTypeGuide(CameraConstants c, CausticSphere s, float2 size) {
+    float4 now = guideClip(c.viewProj, s.centre);
+    float4 before = guideClip(c.prevViewProj, s.centre);
     SecondTypeGuide g;
     g.linearDepth = max(abs(now.w), kGuideMinDepth);
     bool seen = before.w > 0.0f && now.w > 0.0f;
@@ -92,37 +63,15 @@ CAUSTICS_FN SecondTypeGuide secondTypeGuide(GuideCamera c, GuideSphere s, float2
     return g;
 }
 
-// The camera as common/camera.h's pinhole (the guide camera is CameraConstants by columns).
-CAUSTICS_FN PinholeCamera guidePinhole(GuideCamera c, float2 size) {
-    PinholeCamera p;
-    p.eye = toFloat3(c.eye);
-    p.right = toFloat3(c.right);
-    p.up = toFloat3(c.up);
-    p.forward = toFloat3(c.forward);
-    p.tanHalfFovY = c.forward.w;
-    p.aspect = c.right.w;
-    p.width = size.x;
-    p.height = size.y;
-    return p;
-}
-
-// The surface the camera sees at pixel p's centre at linear depth `depth` (cameraWorldPosition, with the
-// host's jitter eye.w, up.w).
-CAUSTICS_FN float3 guideSurfacePoint(GuideCamera c, float2 size, int2 p, float depth) {
-    PinholeCamera pin = guidePinhole(c, size);
-    float3 d = cameraRayDirection(pin, float2(p) + 0.5f - float2(c.eye.w, c.up.w));
-    return pin.eye + d * (depth / dot(d, pin.forward));
-}
-
 // A receiver seen through a glass that moved (docs/caustics.md "Moving objects"): what the glass shows
 // moves with it, the lens and the caustic under it alike, so the guide's motion is the glass point's
 // (glassNow at this pixel, glassBefore where it was last frame, both world) and last frame's depth is
 // the receiver point's carried by the glass's motion (receiverBefore).
-CAUSTICS_FN SecondTypeGuide secondTypeGuideThroughMovedGlass(GuideCamera c, SecondTypeGuide g, float3 glassNow,
+CAUSTICS_FN SecondTypeGuide secondTypeGuideThroughMovedGlass(CameraConstants c, SecondTypeGuide g, float3 glassNow,
                                                              float3 glassBefore, float3 receiverBefore, float2 size) {
-    float4 now = guideClip(c.viewProj[0], c.viewProj[1], c.viewProj[2], c.viewProj[3], glassNow);
-    float4 before = guideClip(c.prevViewProj[0], c.prevViewProj[1], c.prevViewProj[2], c.prevViewProj[3], glassBefore);
-    float4 receiver = guideClip(c.prevViewProj[0], c.prevViewProj[1], c.prevViewProj[2], c.prevViewProj[3], receiverBefore);
+    float4 now = guideClip(c.viewProj, glassNow);
+    float4 before = guideClip(c.prevViewProj, glassBefore);
+    float4 receiver = guideClip(c.prevViewProj, receiverBefore);
     bool seen = before.w > 0.0f && now.w > 0.0f && receiver.w > 0.0f;
     SecondTypeGuide r = g;
     r.motion = seen ? guideTexel(before, size) - guideTexel(now, size) : splat2(kGuideNoHistory);
@@ -145,15 +94,15 @@ void secondTypeGuidesThread(uint2 id) {
         return;
     }
     uint slot = id.y * params.size.x + id.x;
-    if (slot >= min(countersLoad(kGuideSphereCountSlot), params.sphereCapacity)) return;
-    GuideSphere s = spheresLoad(slot);
+    if (slot >= min(countersLoad(kStatSpheres), params.sphereCapacity)) return;
+    CausticSphere s = spheresLoad(slot);
     SecondTypeGuide g = secondTypeGuide(camera, s, float2(params.size));
     int2 p = int2(int(s.pixel % params.size.x), int(s.pixel / params.size.x));
     uint glass = CAUSTICS_TEXEL_UINT(gObjectId, p);   // the instance the camera sees at the pixel, + 1
     if (params.objectMotion != 0u && glass - 1u < params.instanceCount) {
         uint r = kCasterMotionRowsPerInstance * (glass - 1u);
         float4 r0 = instanceMotionLoad(r), r1 = instanceMotionLoad(r + 1u), r2 = instanceMotionLoad(r + 2u);
-        float3 glassNow = guideSurfacePoint(camera, float2(params.size), p, CAUSTICS_TEXEL(gLinearDepth, p).r);
+        float3 glassNow = cameraWorldPosition(camera, float2(p) + 0.5f, CAUSTICS_TEXEL(gLinearDepth, p).r);
         float3 glassBefore = instanceRowsApply(r0, r1, r2, glassNow);
         float3 moved = glassBefore - glassNow;
         if (dot(moved, moved) > 1e-10f)   // over 10 um: not rounding

@@ -2,7 +2,6 @@
 // type-checks the code the GLSL and HLSL entries run, and these tests pin its behaviour.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -243,15 +242,15 @@ glm::mat4 viewProjAt(float shift) {
            glm::lookAt(glm::vec3(shift, 0.0f, 2.0f), glm::vec3(shift, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
-GuideCamera guideCamera(const glm::mat4& now, const glm::mat4& before) {
-    GuideCamera c{};
-    std::memcpy(c.viewProj, &now, sizeof(now));
-    std::memcpy(c.prevViewProj, &before, sizeof(before));
+CameraConstants guideCamera(const glm::mat4& now, const glm::mat4& before) {
+    CameraConstants c{};
+    c.viewProj = now;
+    c.prevViewProj = before;
     return c;
 }
 
 TEST(SecondTypeGuideBody, HoldsTheReceiversDepthAndItsShiftBetweenTheTwoProjections) {
-    GuideSphere s{};
+    CausticSphere s{};
     s.centre = float3(0.3f, -0.2f, 0.0f);
     s.normal = float3(0.0f, 0.0f, 1.0f);
     s.objectId = 7;
@@ -272,7 +271,7 @@ TEST(SecondTypeGuideBody, HoldsTheReceiversDepthAndItsShiftBetweenTheTwoProjecti
 }
 
 TEST(SecondTypeGuideBody, AReceiverBehindLastFramesCameraHasNoHistory) {
-    GuideSphere s{};
+    CausticSphere s{};
     s.centre = float3(0.0f, 0.0f, 0.0f);
     const glm::mat4 now = viewProjAt(0.0f);
     const glm::mat4 turned = glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f) *
@@ -284,7 +283,7 @@ TEST(SecondTypeGuideBody, AReceiverBehindLastFramesCameraHasNoHistory) {
 
 // A reflection can reach a receiver behind the camera: the filter divides by the guide depth.
 TEST(SecondTypeGuideBody, AReceiverBehindTheCameraGetsAPositiveDepthAndNoHistory) {
-    GuideSphere s{};
+    CausticSphere s{};
     s.centre = float3(0.0f, 0.0f, 3.0f);   // behind the camera at z = 2 looking towards -z
     const glm::mat4 now = viewProjAt(0.0f);
     SecondTypeGuide g = secondTypeGuide(guideCamera(now, now), s, float2(64.0f, 64.0f));
@@ -296,10 +295,10 @@ TEST(SecondTypeGuideBody, AReceiverBehindTheCameraGetsAPositiveDepthAndNoHistory
 // receiver's (the glass, nearer the camera, moves by more pixels), and last frame's depth is the receiver's
 // carried by the glass's motion.
 TEST(SecondTypeGuideBody, ThroughAMovedGlassTheMotionIsTheGlasssAndTheDepthTheCarriedReceivers) {
-    GuideSphere s{};
+    CausticSphere s{};
     s.centre = float3(0.1f, 0.0f, 0.0f);   // the receiver, 2 m from the camera
     const glm::mat4 still = viewProjAt(0.0f);
-    const GuideCamera c = guideCamera(still, still);
+    const CameraConstants c = guideCamera(still, still);
     const SecondTypeGuide g = secondTypeGuide(c, s, float2(64.0f, 64.0f));
     EXPECT_NEAR(g.motion.x, 0.0f, 1e-4f);   // a still camera: no motion of its own
     const float3 step(-0.05f, 0.0f, 0.0f);   // where the glass was last frame, minus where it is
