@@ -1,7 +1,10 @@
 #include "caustics/gpu_light.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+
+#include "common/scene.h"
 
 namespace caustics {
 
@@ -23,12 +26,14 @@ GpuLight toGpuLight(const scene::Light& light) {
 }
 
 std::vector<uint8_t> packLightBuffer(const std::vector<scene::Light>& lights) {
-    std::vector<uint8_t> bytes(16 + sizeof(GpuLight) * lights.size(), 0);
-    uint32_t count = uint32_t(lights.size());
-    std::memcpy(bytes.data(), &count, sizeof(count));
+    shader::GpuLightTableHeader header{};
+    header.count = uint32_t(lights.size());
+    // Room for one light at least: a storage buffer is never empty.
+    std::vector<uint8_t> bytes(sizeof(header) + sizeof(GpuLight) * std::max<size_t>(lights.size(), 1), 0);
+    std::memcpy(bytes.data(), &header, sizeof(header));
     for (size_t i = 0; i < lights.size(); ++i) {
         GpuLight g = toGpuLight(lights[i]);
-        std::memcpy(bytes.data() + 16 + i * sizeof(GpuLight), &g, sizeof(GpuLight));
+        std::memcpy(bytes.data() + sizeof(header) + i * sizeof(GpuLight), &g, sizeof(GpuLight));
     }
     return bytes;
 }

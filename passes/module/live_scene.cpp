@@ -71,7 +71,6 @@ Result<PackedFrame> packFrame(const scene::Scene& scene, const scene::GpuScene& 
         appendBytes(p.tlas, d);
     }
     p.lights = packLightBuffer(scene.lights);
-    p.lights.resize(std::max<size_t>(p.lights.size(), 16 + sizeof(GpuLight)), 0);   // never an empty array
     p.instanceCount = uint32_t(scene.instances.size());
     p.lightCount = uint32_t(scene.lights.size());
     return p;

@@ -43,7 +43,7 @@ Result<rhi::BindingLayoutHandle> createPassBindingLayout(rhi::IDevice& device, c
     rhi::BindingLayoutDesc desc;
     desc.setVisibility(visibility);
     for (const shader_bindings::Binding& b : pass.bindings)
-        if (b.set == set) desc.add(b.slot, typeOf(b.kind));
+        if (b.set == set) desc.add(b.slot, typeOf(b.kind), b.count);
     if (desc.items.empty())
         return makeError(std::string(pass.name) + ": no binding is declared in set " + std::to_string(set));
     return device.createBindingLayout(desc);
@@ -62,9 +62,23 @@ const shader_bindings::Binding* PassBindingSet::find(std::string_view name, cons
 PassBindingSet& PassBindingSet::texture(std::string_view name, rhi::TextureHandle texture) {
     const shader_bindings::Binding* b = find(name, "texture");
     if (!b) return *this;
-    if (b->kind == Kind::SampledTexture) desc_.add(rhi::BindingSetItem::sampledTexture(b->slot, std::move(texture)));
+    if (b->count != 1)
+        errors_.push_back("'" + std::string(name) + "' is an array of " + std::to_string(b->count) + " (textures(), not texture())");
+    else if (b->kind == Kind::SampledTexture) desc_.add(rhi::BindingSetItem::sampledTexture(b->slot, std::move(texture)));
     else if (b->kind == Kind::StorageTexture) desc_.add(rhi::BindingSetItem::storageTexture(b->slot, std::move(texture)));
     else errors_.push_back(declaredAs(name, b->kind, "a texture"));
+    return *this;
+}
+
+PassBindingSet& PassBindingSet::textures(std::string_view name, std::span<const rhi::TextureHandle> textures) {
+    const shader_bindings::Binding* b = find(name, "texture array");
+    if (!b) return *this;
+    if (b->kind != Kind::SampledTexture) errors_.push_back(declaredAs(name, b->kind, "a texture array"));
+    else if (textures.size() != b->count)
+        errors_.push_back("'" + std::string(name) + "' is an array of " + std::to_string(b->count) + ", given " +
+                          std::to_string(textures.size()) + " textures");
+    else
+        for (uint32_t i = 0; i < b->count; ++i) desc_.add(rhi::BindingSetItem::sampledTexture(b->slot, textures[i], i));
     return *this;
 }
 

@@ -2,6 +2,7 @@
 // A pass's binding layout and binding sets from its one declaration (shaders/bindings/shader_binding.h;
 // docs/shaders.md, "Bindings"): the layout lists the declared bindings of a set, and a set is filled by
 // binding name, so a slot number is written only in the declaration.
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,8 @@ class PassBindingSet {
 public:
     PassBindingSet(const shader_bindings::PassBindings& pass, uint32_t set) : pass_(&pass), set_(set) {}
     PassBindingSet& texture(std::string_view name, rhi::TextureHandle texture);   // sampled or storage
+    // Every element of a texture array: `textures` holds exactly its declared count.
+    PassBindingSet& textures(std::string_view name, std::span<const rhi::TextureHandle> textures);
     PassBindingSet& buffer(std::string_view name, rhi::BufferHandle buffer);      // storage or constant
     PassBindingSet& sampler(std::string_view name, rhi::SamplerHandle sampler);
     PassBindingSet& accelStruct(std::string_view name, rhi::AccelStructHandle accelStruct);

@@ -1,5 +1,5 @@
-// Build-time tool: writes the GLSL and HLSL declarations of every pass's shader resources from their
-// one C++ declaration (shader_binding.h; docs/shaders.md, "Bindings").
+// Build-time tool: writes the GLSL and HLSL declarations of every pass's shader resources, and of the
+// scene's set they share, from their one C++ declaration (shader_binding.h; docs/shaders.md, "Bindings").
 // Usage: generate_bindings OUT_DIR NAME...   writes OUT_DIR/glsl/bindings/<NAME>.h and
 // OUT_DIR/hlsl/bindings/<NAME>.h (one include path per language, so a body includes
 // "bindings/<NAME>.h" in both) for each declaration and fails if the names given (the outputs CMake expects) are not exactly the declared ones.
@@ -27,10 +27,16 @@ uint32_t builtinStride(std::string_view t) {
     return 0;
 }
 
+// Byte offset of element i of a storage buffer: after its header, if it has one.
+std::string elementAt(const Binding& b, uint32_t stride) {
+    const std::string scaled = "i * " + std::to_string(stride) + "u";
+    return b.headerBytes ? std::to_string(b.headerBytes) + "u + " + scaled : scaled;
+}
+
 // Raw-buffer access of element i: Load/Load2/Load4 with asfloat/asint for the built-in types (any
 // shader model), the templated Load<T>/Store<T> (StructuredBuffer layout) for a struct.
 std::string hlslRawLoad(const Binding& b, uint32_t stride) {
-    const std::string name = str(b.name), element = str(b.element), at = "(i * " + std::to_string(stride) + "u)";
+    const std::string name = str(b.name), element = str(b.element), at = "(" + elementAt(b, stride) + ")";
     if (!builtinStride(b.element)) return name + ".Load<" + element + ">" + at;
     const uint32_t n = builtinStride(b.element) / 4;
     const std::string load = name + ".Load" + (n > 1 ? std::to_string(n) : "") + at;
@@ -40,10 +46,21 @@ std::string hlslRawLoad(const Binding& b, uint32_t stride) {
 }
 
 std::string hlslRawStore(const Binding& b, uint32_t stride) {
-    const std::string name = str(b.name), at = "i * " + std::to_string(stride) + "u";
+    const std::string name = str(b.name), at = elementAt(b, stride);
     if (!builtinStride(b.element)) return name + ".Store<" + str(b.element) + ">(" + at + ", v)";
     const uint32_t n = builtinStride(b.element) / 4;
     return name + ".Store" + (n > 1 ? std::to_string(n) : "") + "(" + at + ", asuint(v))";
+}
+
+// <name>Load(i) of a struct with float4x4 members: the struct, then each matrix again column by column
+// (MatrixMember in shader_binding.h says why).
+std::string hlslLoadWithMatrices(const Binding& b, uint32_t stride) {
+    const std::string name = str(b.name), element = str(b.element);
+    std::string s = element + " " + name + "Load(uint i) {\n    uint at = " + elementAt(b, stride) + ";\n    " + element +
+                    " v = " + name + ".Load<" + element + ">(at);\n";
+    for (const MatrixMember& m : b.matrices)
+        s += "    v." + str(m.name) + " = loadFloat4x4(" + name + ", at + " + std::to_string(m.offset) + "u);\n";
+    return s + "    return v;\n}\n";
 }
 
 std::string glslType(std::string_view t) {
@@ -93,7 +110,7 @@ std::string registerOf(const Binding& b, char cls) {
     return " : register(" + std::string(1, cls) + std::to_string(b.slot) + ", space" + std::to_string(b.set) + ");\n";
 }
 
-bool writeBinding(const Binding& b, std::string& glsl, std::string& hlsl, std::string& error) {
+bool writeDeclaration(const Binding& b, std::string& glsl, std::string& hlsl, std::string& error) {
     const std::string name = str(b.name), element = str(b.element);
     const uint32_t stride = b.stride ? b.stride : builtinStride(b.element);
     switch (b.kind) {
@@ -108,26 +125,42 @@ bool writeBinding(const Binding& b, std::string& glsl, std::string& hlsl, std::s
                 return false;
             }
             const bool rw = b.kind == Kind::StorageBufferRW;
-            glsl += layoutHead(b, "std430") + (rw ? " buffer " : " readonly buffer ") + name + "Buffer { " +
+            if (rw && !b.matrices.empty()) {
+                error = name + ": a writable storage buffer of a struct with matrices is not generated";
+                return false;
+            }
+            if (b.header.empty() != (b.headerBytes == 0)) {
+                error = name + ": a header needs both its struct and its size";
+                return false;
+            }
+            const std::string header = b.header.empty() ? "" : str(b.header) + " " + name + "Header; ";
+            glsl += layoutHead(b, "std430") + (rw ? " buffer " : " readonly buffer ") + name + "Buffer { " + header +
                     glslType(b.element) + " " + name + "[]; };\n";
             glsl += glslType(b.element) + " " + name + "Load(uint i) { return " + name + "[i]; }\n";
             if (rw) glsl += "void " + name + "Store(uint i, " + glslType(b.element) + " v) { " + name + "[i] = v; }\n";
             hlsl += std::string(rw ? "RWByteAddressBuffer " : "ByteAddressBuffer ") + name + registerOf(b, rw ? 'u' : 't');
-            hlsl += element + " " + name + "Load(uint i) { return " + hlslRawLoad(b, stride) + "; }\n";
+            if (!b.header.empty()) {
+                glsl += str(b.header) + " " + name + "LoadHeader() { return " + name + "Header; }\n";
+                hlsl += str(b.header) + " " + name + "LoadHeader() { return " + name + ".Load<" + str(b.header) + ">(0u); }\n";
+            }
+            if (b.matrices.empty()) hlsl += element + " " + name + "Load(uint i) { return " + hlslRawLoad(b, stride) + "; }\n";
+            else hlsl += hlslLoadWithMatrices(b, stride);
             if (rw) hlsl += "void " + name + "Store(uint i, " + element + " v) { " + hlslRawStore(b, stride) + "; }\n";
             if (rw && element == "uint") {
                 // A counter: <name>AtomicAdd(i, v) adds v to element i and returns the value before.
                 glsl += "uint " + name + "AtomicAdd(uint i, uint v) { return atomicAdd(" + name + "[i], v); }\n";
                 hlsl += "uint " + name + "AtomicAdd(uint i, uint v) { uint old; " + name +
-                        ".InterlockedAdd(i * 4u, v, old); return old; }\n";
+                        ".InterlockedAdd(" + elementAt(b, 4) + ", v, old); return old; }\n";
             }
             return true;
         }
         case Kind::SampledTexture: {
             const char* prefix = isUint(b.element) ? "u" : (isInt(b.element) ? "i" : "");
             const std::string dim = b.textureArray ? "2DArray" : "2D";
-            glsl += layoutHead(b) + " uniform " + prefix + "texture" + dim + " " + name + ";\n";
-            hlsl += "Texture" + dim + "<" + element + "> " + name + registerOf(b, 't');
+            // A descriptor array (count > 1) is indexed by the shader: name[i].
+            const std::string array = b.count > 1 ? "[" + std::to_string(b.count) + "]" : "";
+            glsl += layoutHead(b) + " uniform " + prefix + "texture" + dim + " " + name + array + ";\n";
+            hlsl += "Texture" + dim + "<" + element + "> " + name + array + registerOf(b, 't');
             return true;
         }
         case Kind::StorageTexture: {
@@ -153,6 +186,23 @@ bool writeBinding(const Binding& b, std::string& glsl, std::string& hlsl, std::s
     }
     error = name + ": unknown kind";
     return false;
+}
+
+// One binding, inside #ifndef <omitIf> when a shader may leave it out (the scene's TLAS in raster and
+// compute shaders, which have no ray-tracing types; its textures where a pass reads none).
+bool writeBinding(const Binding& b, std::string& glsl, std::string& hlsl, std::string& error) {
+    if (b.count != 1 && (b.kind != Kind::SampledTexture || b.count == 0)) {
+        error = str(b.name) + ": only sampled textures are declared as arrays";
+        return false;
+    }
+    if (b.omitIf.empty()) return writeDeclaration(b, glsl, hlsl, error);
+    const std::string open = "#ifndef " + str(b.omitIf) + "\n";
+    glsl += open;
+    hlsl += open;
+    if (!writeDeclaration(b, glsl, hlsl, error)) return false;
+    glsl += "#endif\n";
+    hlsl += "#endif\n";
+    return true;
 }
 
 bool writePass(const PassBindings& pass, const fs::path& dir, std::string& error) {

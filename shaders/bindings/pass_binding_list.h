@@ -1,6 +1,6 @@
 #pragma once
-// Every pass whose shader resources are declared once (shader_binding.h): the generator writes the
-// GLSL and HLSL declarations of each. A pass adopting the scheme adds its declaration here and its
+// Every pass whose shader resources are declared once (shader_binding.h), and the scene's set that
+// they share: the generator writes the GLSL and HLSL declarations of each. A pass adopting the scheme adds its declaration here and its
 // name to CAUSTICS_PASS_BINDINGS (shaders/bindings/CMakeLists.txt).
 #include "caustics_output/caustics_output_bindings.h"
 #include "composite/composite_bindings.h"
@@ -24,6 +24,7 @@
 #include "backward_trace/specular_pixels_bindings.h"
 #include "backward_trace/second_type_guide_fill_bindings.h"
 #include "caustic_filter/combine_types_bindings.h"
+#include "module/scene_set_bindings.h"
 
 namespace caustics::shader_bindings {
 
@@ -37,6 +38,7 @@ inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRema
                                                      &kSecondTypeGuidesBindings, &kSecondTypeGuideFillBindings,
                                                      &kCombineTypesBindings, &kCausticsOutputBindings,
                                                      &kBackwardBindings, &kGatherBindings, &kGatherFixedBindings,
-                                                     &kGatherFixed64Bindings, &kSpecularPixelsBindings};
+                                                     &kGatherFixed64Bindings, &kSpecularPixelsBindings,
+                                                     &kSceneSetBindings};
 
 }  // namespace caustics::shader_bindings

@@ -24,6 +24,14 @@ enum class Kind : uint8_t {
 // Storage-texture formats (their GLSL layout qualifier, the HLSL element type, the C++ format).
 enum class ImageFormat : uint8_t { None, Rgba8, Rgba16f, Rgba32f, R32f, R32ui, Rg32ui, Rgba32ui };
 
+// A float4x4 member of a storage buffer's struct element and its byte offset in the struct. HLSL reads
+// it column by column (loadFloat4x4, common/lang.h): a C++ glm::mat4 is stored column-major, and a
+// templated Load<T> of a matrix would take the matrix's packing from the compiler's flags instead.
+struct MatrixMember {
+    std::string_view name;
+    uint32_t offset;
+};
+
 struct Binding {
     std::string_view name;      // the shader-visible name, and the key a binding set is filled by
     Kind kind;
@@ -33,6 +41,11 @@ struct Binding {
     ImageFormat format = ImageFormat::None;   // storage textures only
     uint32_t stride = 0;        // storage buffers of a struct: its std430 size (built-in types: derived)
     bool textureArray = false;  // sampled textures: a 2D array (GLSL texture2DArray / HLSL Texture2DArray)
+    uint32_t count = 1;         // sampled textures: a descriptor array of `count` (the scene's textures)
+    std::string_view header;    // storage buffers: a struct before the array (<name>Header, <name>LoadHeader())
+    uint32_t headerBytes = 0;   // its size: where element 0 starts (HLSL; std430 places it there too, checked)
+    std::span<const MatrixMember> matrices;   // storage buffers of a struct: its float4x4 members
+    std::string_view omitIf;    // a macro that, defined before the include, leaves this binding out
 };
 
 struct PassBindings {

@@ -5,8 +5,8 @@
 // GpuVertex (engine/scene/include/caustics/scene/gpu_types.h) and caustics::GpuLight
 // (passes/internal/caustics/gpu_light.h), their flags, and the pure functions of a material. The C++
 // tables are checked against these member by member (passes/module/scene_layout_check.cpp). The
-// resources are declared per API by shaders/vulkan/scene/scene.glsl and shaders/d3d12/scene/scene.hlsli,
-// which define the accessors sceneSurfaceHit (a ray hit's surface) reads.
+// resources are declared once in C++ (passes/module/scene_set_bindings.h, generated as bindings/scene.h);
+// common/scene_resources.h defines over them the accessors sceneSurfaceHit (a ray hit's surface) reads.
 #include "common/fresnel.h"
 #include "common/lang.h"
 #include "common/specular_event.h"
@@ -57,6 +57,10 @@ struct GpuLight {      // 64 bytes
     float cosOuter; uint castsCaustics; uint pad0; uint pad1;
 };
 
+struct GpuLightTableHeader {   // 16 bytes, before the lights (caustics::packLightBuffer)
+    uint count; uint pad0; uint pad1; uint pad2;
+};
+
 // Everything a pass needs about a ray hit on a scene triangle (sceneSurfaceHit fills it).
 struct SurfaceHit {
     float3 position;         // world
@@ -81,8 +85,8 @@ CAUSTICS_FN float4 sceneOpticsEncoding(GpuMaterial m) {
 }
 CAUSTICS_SHARED_END
 
-// The accessors sceneSurfaceHit reads the scene through: defined by the per-API scene shim
-// (shaders/vulkan/scene/scene.glsl, shaders/d3d12/scene/scene.hlsli) or a C++ caller.
+// The accessors sceneSurfaceHit reads the scene through: defined over the generated declarations by
+// common/scene_resources.h, or by a C++ caller.
 CAUSTICS_SHARED_BEGIN
 GpuInstance sceneInstance(uint i);
 GpuVertex sceneVertex(uint i);

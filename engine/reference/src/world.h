@@ -30,7 +30,7 @@ struct WorldScene {
 WorldScene buildWorldScene(const scene::Scene& scene);
 
 // Linear albedo of `material` at `uv`: baseColor times its base-colour texture sampled as the GPU
-// passes do (bilinear, repeat, sRGB decoded, mip 0: textureLod(..., 0) in shaders/vulkan/scene).
+// passes do (bilinear, repeat, sRGB decoded, mip 0: sceneBaseColor in shaders/common/scene_resources.h).
 glm::vec3 albedoAt(const scene::Scene& scene, const scene::Material& material, glm::vec2 uv);
 
 // Offset for rays leaving a surface point, relative to the coordinates' magnitude (float spacing).

@@ -6,7 +6,7 @@ struct CausticMapVaryings {
 #if defined(CAUSTICS_STAGE_VERT)
 #define SCENE_NO_TEXTURES
 #define SCENE_NO_TLAS
-#include "scene/scene.hlsli"
+#include "common/scene_resources.h"
 #include "scene/camera.hlsli"
 #include "caustic_map.h"
 // SV_InstanceID does not include firstInstance, so the backend's draw parameters (b0, space998) add it.

@@ -3,7 +3,7 @@
 // Vulkan vertex entry of caustics.maps; the body is caustic_map.h (docs/shaders.md).
 #define SCENE_NO_TEXTURES
 #define SCENE_NO_TLAS
-#include "scene/scene.glsl"
+#include "common/scene_resources.h"
 #include "caustic_map.h"
 layout(location = 0) flat out uint outInstance;
 void main() {

@@ -1,5 +1,5 @@
 // D3D12 ray-generation entry of direct_lighting; the body is direct.h (docs/shaders.md).
-#include "scene/scene.hlsli"
+#include "common/scene_resources.h"
 #include "direct.h"
 [shader("raygeneration")]
 void main() { directThread(int2(DispatchRaysIndex().xy)); }

@@ -4,7 +4,7 @@
 #define CAUSTICS_STAGE_FRAG 1
 #define SCENE_UNIFORM_TEXTURE_INDEX
 #define SCENE_NO_TLAS
-#include "scene/scene.glsl"
+#include "common/scene_resources.h"
 #include "gbuffer.h"
 layout(location = 0) in vec3 inWorldPos;
 layout(location = 1) in vec3 inNormal;

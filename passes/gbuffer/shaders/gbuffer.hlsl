@@ -1,7 +1,7 @@
 // D3D12 entries of gbuffer; the body is gbuffer.h (docs/shaders.md).
 #define SCENE_UNIFORM_TEXTURE_INDEX
 #define SCENE_NO_TLAS
-#include "scene/scene.hlsli"
+#include "common/scene_resources.h"
 #include "scene/camera.hlsli"
 #include "gbuffer.h"
 

@@ -3,7 +3,7 @@
 // Vulkan vertex entry of gbuffer; the body is gbuffer.h (docs/shaders.md).
 #define SCENE_UNIFORM_TEXTURE_INDEX
 #define SCENE_NO_TLAS
-#include "scene/scene.glsl"
+#include "common/scene_resources.h"
 #include "gbuffer.h"
 layout(location = 0) out vec3 outWorldPos;
 layout(location = 1) out vec3 outNormal;

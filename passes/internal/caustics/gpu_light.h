@@ -32,7 +32,8 @@ static_assert(offsetof(GpuLight, cosOuter) == 48);
 
 GpuLight toGpuLight(const scene::Light& light);
 
-// The light buffer's bytes: a 16-byte header (uint count, 3 x pad) followed by count GpuLight.
+// The light buffer's bytes: its header (GpuLightTableHeader in shaders/common/scene.h, the count) followed
+// by count GpuLight, and room for one light at least.
 std::vector<uint8_t> packLightBuffer(const std::vector<scene::Light>& lights);
 
 }  // namespace caustics

@@ -1,9 +1,10 @@
 #pragma once
-// The GPU scene as one binding set (descriptor set), the layout shaders/vulkan/scene/scene.glsl
-// declares (binding numbers are listed there). Every pass that traces or shades scene geometry binds
-// it, by default as set 0. SceneBindings::create binds a frozen scene (lights uploaded once; tests and
-// tools); the module binds a live scene through one SceneBindings per frame-in-flight slot whose
-// tables and TLAS it rewrites every frame (passes/module/live_scene.h, docs/embedding.md).
+// The GPU scene as one binding set (descriptor set), declared once in passes/module/scene_set_bindings.h
+// (its names, slots and element types; the shaders include the declarations generated from it). Every
+// pass that traces or shades scene geometry binds it, by default as set 0. SceneBindings::create binds a
+// frozen scene (lights uploaded once; tests and tools); the module binds a live scene through one
+// SceneBindings per frame-in-flight slot whose tables and TLAS it rewrites every frame
+// (passes/module/live_scene.h, docs/embedding.md).
 #include <cstdint>
 
 #include "caustics/rhi/device.h"
@@ -12,15 +13,6 @@
 #include "caustics/scene/scene.h"
 
 namespace caustics {
-
-// Size of the bindless texture array (SCENE_MAX_TEXTURES in scene.glsl). A fixed size keeps the
-// layout free of descriptor-indexing features; unused slots hold the scene's first texture.
-inline constexpr uint32_t kMaxSceneTextures = 256;
-
-namespace scene_slots {
-inline constexpr uint32_t kTlas = 0, kPositions = 1, kVertices = 2, kIndices = 3, kMaterials = 4,
-                          kInstances = 5, kLights = 6, kSampler = 7, kTextures = 8;
-}
 
 // What set 0 binds besides the textures (layouts: caustics/scene/gpu_types.h, caustics/host_scene.h).
 struct SceneTables {
@@ -42,13 +34,13 @@ struct SceneBindings {
 
     // The layout of set 0 (the same object for every slot, so pipelines are built once).
     static Result<rhi::BindingLayoutHandle> createLayout(rhi::IDevice& device);
-    // Set 0 over `tables` and `textures` (at most kMaxSceneTextures, at least one).
+    // Set 0 over `tables` and `textures` (at least one, at most the declared array's kSceneTextureCount).
     static Result<rhi::BindingSetHandle> createSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
                                                    const rhi::SamplerHandle& sampler,
                                                    const std::vector<rhi::TextureHandle>& textures,
                                                    const SceneTables& tables);
 
-    // Fails when the scene has more than kMaxSceneTextures textures (message says how many) or no TLAS.
+    // Fails when the scene has more textures than the array holds (message says how many) or no TLAS.
     static Result<SceneBindings> create(rhi::IDevice& device, const scene::GpuScene& gpuScene,
                                         const scene::Scene& scene);
 };

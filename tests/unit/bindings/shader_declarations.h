@@ -3,7 +3,7 @@
 // (GLSL `layout(set=, binding=)`, HLSL `register(tN/uN/bN/sN, spaceM)`), the push-constant block and
 // the ray payload / hit attribute types with their sizes. A small preprocessor runs first (object-like
 // #define, #undef, #ifdef/#ifndef/#if defined/#elif/#else/#endif, GLSL #include "..."), so macros
-// such as SCENE_SET or RADIANCE_REGISTER resolve as the compiler would resolve them.
+// such as SCENE_NO_TLAS or CAUSTICS_STAGE_FRAG resolve as the compiler would resolve them.
 #include <cstdint>
 #include <functional>
 #include <optional>
