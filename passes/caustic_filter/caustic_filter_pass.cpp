@@ -84,12 +84,12 @@ struct FilterFrame {
 // last iteration writes into `output` (caustics.radiance) instead. Two passes: the weight sums W_q, then
 // the shares w / W_q (passes/caustic_filter/shaders/atrous.h; docs/caustics.md "Cost").
 void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterFrame& ff, rg::RgTexture& radiance,
-                        rg::RgTexture& output) {
+                        rg::RgTexture& output, bool jitteredGuides) {
     const CausticsSettings& s = f.in->settings;
     const bool last = i + 1 == s.atrousIterations;
     const std::string name = "caustics.atrous." + std::to_string(i);
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
-                                    1.0f / ff.preExposure};
+                                    1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f};
     rg::RgTexture sums;
     graph.addPass(name + ".weights", [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
@@ -256,14 +256,15 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     rg::RgTexture radiance;
     graph.addPass("caustics.variance", [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
-        const rg::RgTexture in[] = {b.read(raw), b.read(color), b.read(guides), b.read(g.objectId)};
+        const rg::RgTexture in[] = {b.read(raw), b.read(color), b.read(guides), b.read(g.objectId), b.read(g.normalRoughness)};
         readTiles(b, ff.tiles, true);
         radiance = b.write(b.createTexture("caustics.variance", poolImageDesc(ff.poolTiles, rhi::Format::RGBA16_FLOAT,
                                                                               "caustics.variance")));
         CausticFrame fr = f;
         rg::RgTexture o = radiance;
         FilterTiles t = ff.tiles;
-        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure};
+        // The second type's guides carry each pixel's photon weight (second_type_guides.h).
+        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u};
         return [=](rg::PassContext& ctx) {
             dispatchDeclared(ctx, *fr.res, fr.res->filter.variance, fr.res->filter.varianceLayout,
                              PassBindingSet(shader_bindings::kCausticVarianceBindings, 0)
@@ -271,6 +272,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
                                  .texture("temporalColor", ctx.texture(in[1]))
                                  .texture("temporalGuides", ctx.texture(in[2]))
                                  .texture("gObjectId", ctx.texture(in[3]))
+                                 .texture("gNormal", ctx.texture(in[4]))
                                  .texture("slotMap", ctx.texture(t.slots))
                                  .buffer("tiles", ctx.buffer(t.list))
                                  .texture("outColor", ctx.texture(o)),
@@ -278,7 +280,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         };
     });
 
-    for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, ff, radiance, raw);
+    for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, ff, radiance, raw, motionGuides);
     return ff.tiles.args;
 }
 

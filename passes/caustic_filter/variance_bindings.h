@@ -12,6 +12,7 @@ inline constexpr Binding kCausticVarianceBindingList[] = {
     {"slotMap", Kind::SampledTexture, 0, 4, "uint"},            // this frame's
     {"tiles", Kind::StorageBufferRO, 0, 5, "uint"},             // the tile list
     {"outColor", Kind::StorageTexture, 0, 6, "float4", ImageFormat::Rgba16f},   // pool
+    {"gNormal", Kind::SampledTexture, 0, 7, "float4"},          // .w: photon weights (VarianceParams)
 };
 
 inline constexpr PassBindings kCausticVarianceBindings{"caustic_variance", "passes/caustic_filter/variance_bindings.h",

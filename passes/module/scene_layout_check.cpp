@@ -137,6 +137,7 @@ CAUSTICS_SAME_MEMBER(CausticSphere, ShaderSphere, objectId);
 CAUSTICS_SAME_MEMBER(CausticSphere, ShaderSphere, normal);
 CAUSTICS_SAME_MEMBER(CausticSphere, ShaderSphere, pixel);
 CAUSTICS_SAME_MEMBER(CausticSphere, ShaderSphere, outgoing);
+CAUSTICS_SAME_MEMBER(CausticSphere, ShaderSphere, likelyPath);
 
 #undef CAUSTICS_SAME_MEMBER
 

@@ -28,7 +28,9 @@ struct CausticSphere {      // 64 bytes
     float3 centre;        float radius;
     float3 transmittance; uint objectId;
     float3 normal;        uint pixel;
-    float3 outgoing;      float pad;   // unit, from the receiver back along the camera path (BRDF wo)
+    float3 outgoing;      uint likelyPath;   // outgoing: unit, from the receiver back along the camera path
+                                             // (BRDF wo); likelyPath: 1 when every specular event took its
+                                             // most probable lobe (docs/caustics.md "Second-type guides")
 };
 
 // Closest-hit payload of the scene traces (scene_trace/trace.rchit, trace.rmiss): t < 0 = miss.

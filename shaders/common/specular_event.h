@@ -43,6 +43,10 @@ struct SpecularEvent {
     float3 weight;     // multiply the path throughput by this
     uint kind;         // kEvent*
     bool insideMedium; // the new segment runs inside the object's volume
+    // The lobe taken is the most probable of the four (metal, dielectric reflection, refraction, diffuse
+    // base): a camera path that took only such lobes gives the second type's filter guides
+    // (docs/caustics.md "Second-type guides").
+    bool mostLikely;
 };
 
 // d: unit propagation direction arriving at the surface; n: the surface's outward unit normal (the
@@ -54,6 +58,7 @@ CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMateria
     ev.weight = splat3(0.0f);
     ev.kind = kEventAbsorbed;
     ev.insideMedium = false;
+    ev.mostLikely = false;
 
     bool entering = dot(d, n) < 0.0f;
     float3 nf = entering ? n : -n;  // faces the incoming ray
@@ -74,26 +79,34 @@ CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMateria
     float cosOn = dot(wo, nf);
     float cosMn = dot(m, nf);
 
+    // A thin wall reflects as a pane with both faces' inner reflections summed (common/fresnel.h).
+    float f = mat.thinWalled ? thinPaneReflectance(cosOm, mat.ior) : fresnelDielectric(cosOm, etaT / etaI);
+    float dielectric = 1.0f - mat.metallic;
+    float pReflect = dielectric * f, pRefract = dielectric * (1.0f - f) * mat.transmission;
+    float pDiffuse = dielectric * (1.0f - f) * (1.0f - mat.transmission);
+    float pMost = max(max(mat.metallic, pReflect), max(pRefract, pDiffuse));
     float pick = u.z;
     float3 lobeWeight = splat3(1.0f);
     bool doReflect = false;
     if (pick < mat.metallic) {
         doReflect = true;
         lobeWeight = fresnelSchlick(mat.baseColor, cosOm);
+        ev.mostLikely = mat.metallic >= pMost;
     } else {
         pick = (pick - mat.metallic) / max(1.0f - mat.metallic, 1.0e-7f);
-        // A thin wall reflects as a pane with both faces' inner reflections summed (common/fresnel.h).
-        float f = mat.thinWalled ? thinPaneReflectance(cosOm, mat.ior) : fresnelDielectric(cosOm, etaT / etaI);
         if (pick < f) {
             doReflect = true;
+            ev.mostLikely = pReflect >= pMost;
         } else {
             pick = (pick - f) / max(1.0f - f, 1.0e-7f);
             if (pick >= mat.transmission) {
                 ev.kind = kEventDiffuse;
                 ev.weight = splat3(1.0f);
                 ev.insideMedium = !entering && !mat.thinWalled;
+                ev.mostLikely = pDiffuse >= pMost;
                 return ev;
             }
+            ev.mostLikely = pRefract >= pMost;
         }
     }
 

@@ -103,6 +103,7 @@ void backwardLaunch(uint launch, uint launchCount) {
     float3 sigma = splat3(0.0f);
     float pathLength = 0.0f;
     uint events = 0u;
+    bool likelyPath = true;   // every event took its most probable lobe (the filter's guides)
     for (uint vertex = 0u; vertex <= params.maxDepth + 1u; ++vertex) {
         TracePayload hit = traceScene(origin, vertex == 0u ? camera.clip.x : 0.0f, dir, 1.0e30f);
         if (hit.t < 0.0f) break;
@@ -117,6 +118,7 @@ void backwardLaunch(uint launch, uint launchCount) {
             if (events >= params.maxDepth) break;
             SpecularEvent ev = sampleSpecularEvent(dir, h.shadingNormal, h.optics, rngNextFloat3(rng), kTransportRadiance);
             if (ev.kind == kEventAbsorbed) break;
+            likelyPath = likelyPath && ev.mostLikely;
             if (ev.kind != kEventDiffuse) {
                 ++events;
                 throughput *= ev.weight;
@@ -157,7 +159,7 @@ void backwardLaunch(uint launch, uint launchCount) {
         s.normal = nFacing;
         s.pixel = pixel;
         s.outgoing = -dir;
-        s.pad = 0.0f;
+        s.likelyPath = likelyPath ? 1u : 0u;
         appendSphere(s);
         return;
     }

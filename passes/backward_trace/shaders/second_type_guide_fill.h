@@ -41,7 +41,11 @@ void secondTypeGuideFillThread(uint2 id) {
         }
     }
     CAUSTICS_IMAGE_STORE(depthMotion, p, CAUSTICS_TEXEL(sphereDepthMotion, source));
-    CAUSTICS_IMAGE_STORE(normal, p, CAUSTICS_TEXEL(sphereNormal, source));
+    // A filled pixel's photon weight (.w) is stored negated: its sample is not the neighbour's, so the
+    // filter's shot-noise estimate takes the weight but not the pixel's luminance (variance.h).
+    float4 n = CAUSTICS_TEXEL(sphereNormal, source);
+    if (source.x != p.x || source.y != p.y) n.w = -abs(n.w);
+    CAUSTICS_IMAGE_STORE(normal, p, n);
     CAUSTICS_IMAGE_STORE_UINT(objectId, p, CAUSTICS_TEXEL_UINT(sphereObjectId, source));
 }
 #endif

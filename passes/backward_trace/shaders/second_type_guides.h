@@ -39,6 +39,7 @@ struct SecondTypeGuide {
     float previousDepth; // clip w last frame (0: behind last frame's camera, no history)
     float3 normal;
     uint objectId;
+    float photonWeight;  // luminance one photon of unit flux and BRDF adds here, per unfolded pixel (below)
 };
 
 // A world point in clip space through `viewProj` (the camera's or last frame's).
@@ -48,6 +49,18 @@ CAUSTICS_FN float4 guideClip(float4x4 viewProj, float3 x) { return mat4Mul(viewP
 // reprojection computes them (docs/caustics.md "Filter").
 CAUSTICS_FN float2 guideTexel(float4 clip, float2 size) {
     return (float2(clip.x, clip.y) / clip.w * 0.5f + 0.5f) * size - 0.5f;
+}
+
+// The luminance a gathered photon adds to the sphere's pixel is transmittance x flux x BRDF / (pi r^2)
+// (docs/physics.md "Second-type density estimate"): through a curved glass the disk's area changes from
+// pixel to pixel, and with it the size of one photon's step. The filter's shot-noise variance for a
+// young history needs that step at each pixel (caustics.variance, varianceShotNoise); the guide carries
+// its geometric part, lum(transmittance) / (pi r^2), times the unfolded pixel's area at the receiver's
+// depth (depth^2 x pixel solid angle), which keeps it near 1 / magnification^2 in half precision.
+CAUSTICS_FN float secondTypePhotonWeight(CameraConstants c, CausticSphere s, float linearDepth) {
+    float unfoldedArea = linearDepth * linearDepth * pinholePixelArea(cameraPinhole(c));
+    float lumT = dot(s.transmittance, float3(0.2126f, 0.7152f, 0.0722f));
+    return lumT * unfoldedArea / max(3.14159265f * s.radius * s.radius, 1.0e-30f);
 }
 
 CAUSTICS_FN SecondTypeGuide secondTypeGuide(CameraConstants c, CausticSphere s, float2 size) {
@@ -60,6 +73,7 @@ CAUSTICS_FN SecondTypeGuide secondTypeGuide(CameraConstants c, CausticSphere s, 
     g.previousDepth = seen ? before.w : 0.0f;
     g.normal = s.normal;
     g.objectId = s.objectId;
+    g.photonWeight = min(secondTypePhotonWeight(c, s, g.linearDepth), 65504.0f);   // half's largest
     return g;
 }
 
@@ -96,6 +110,11 @@ void secondTypeGuidesThread(uint2 id) {
     uint slot = id.y * params.size.x + id.x;
     if (slot >= min(countersLoad(kStatSpheres), params.sphereCapacity)) return;
     CausticSphere s = spheresLoad(slot);
+    // A path that took a less probable lobe (a Fresnel reflection off the glass, say) gathers a legitimate
+    // sample of the pixel's estimate from another receiver; its guides would keep the filter from
+    // averaging that sample with its neighbours', so it leaves the pixel to the fill, which gives it the
+    // guides of a neighbour's likely path (docs/caustics.md "Second-type guides").
+    if (s.likelyPath == 0u) return;
     SecondTypeGuide g = secondTypeGuide(camera, s, float2(params.size));
     int2 p = int2(int(s.pixel % params.size.x), int(s.pixel / params.size.x));
     uint glass = CAUSTICS_TEXEL_UINT(gObjectId, p);   // the instance the camera sees at the pixel, + 1
@@ -110,7 +129,7 @@ void secondTypeGuidesThread(uint2 id) {
                                                  float2(params.size));
     }
     CAUSTICS_IMAGE_STORE(depthMotion, p, float4(g.linearDepth, g.motion.x, g.motion.y, g.previousDepth));
-    CAUSTICS_IMAGE_STORE(normal, p, float4(g.normal, 0.0f));
+    CAUSTICS_IMAGE_STORE(normal, p, float4(g.normal, g.photonWeight));
     CAUSTICS_IMAGE_STORE_UINT(objectId, p, g.objectId);
 }
 #endif

@@ -12,13 +12,18 @@
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (atrous_bindings.h), 20 bytes.
+// Push constants (atrous_bindings.h), 24 bytes.
 struct AtrousParams {
     int stepWidth;
     int width;
     int height;
     float sigmaLuminance;
     float invPreExposure;   // the last iteration: pool units (pre-exposed) -> radiance
+    // 0 for the camera G-buffer (rasterised at pixel centres, planar surfaces seen directly); 1 for the
+    // second type's guides: read where a backward ray jittered inside its pixel reached the receiver (off
+    // by up to a pixel of depth slope), through glass that bends the receiver's depth away from a plane
+    // over the larger steps (2 % of the depth per step; docs/caustics.md "Second-type guides").
+    float depthJitter;
 };
 
 // B3-spline a-trous kernel taps for |offset| / step = 0, 1, 2 (1/16 (1 4 6 4 1)).
@@ -26,7 +31,8 @@ CAUSTICS_FN float atrousKernelTap(int k) { return k == 0 ? 0.375f : (k == 1 ? 0.
 
 // Weight with which source pixel q spreads its radiance to pixel p = q + offset (SVGF's edge-stopping
 // functions, Schied et al. 2017, eq. 3-5, with a Gaussian luminance term):
-//   w_z = exp(-|z_p - z_q - grad z_q . offset| / (|grad z_q . offset| + 0.002 z_q step))   (a plane passes)
+//   w_z = exp(-|z_p - z_q - grad z_q . offset| / (|grad z_q . offset| + (0.002 + 0.02 j) z_q step + j |grad z_q|_1))
+//         (a plane passes; j = depthJitter, AtrousParams)
 //   w_n = max(0, n_q . n_p)^128
 //   w_l = exp(-d^2 / 2),  d = |l_p - l_q| / (sigma_l sqrt(Var_q + Var_p))
 // times the B3 kernel; the caller checks the object id. The luminance term uses the variance of the
@@ -37,10 +43,13 @@ CAUSTICS_FN float atrousKernelTap(int k) { return k == 0 ? 0.375f : (k == 1 ? 0.
 // evaluate it 50 times per pixel and iteration, and the GPU's special-function units are its bound.
 // `tap` is the offset in steps (-2..2 per axis): p = q + stepWidth tap.
 CAUSTICS_FN float atrousSpreadWeight(int2 tap, int stepWidth, float zq, float zp, float2 gradZq, float3 nq, float3 np,
-                                     float lq, float lp, float varianceQ, float varianceP, float sigmaLuminance) {
+                                     float lq, float lp, float varianceQ, float varianceP, float sigmaLuminance,
+                                     float depthJitter) {
     int2 k = abs(tap);
     float planar = dot(gradZq, float2(tap * stepWidth));
-    float depthTerm = abs(zp - zq - planar) / (abs(planar) + 0.002f * zq * float(stepWidth));
+    float tolerance = abs(planar) + (0.002f + 0.02f * depthJitter) * zq * float(stepWidth) +
+                      depthJitter * (abs(gradZq.x) + abs(gradZq.y));
+    float depthTerm = abs(zp - zq - planar) / tolerance;
     float difference = lp - lq;
     // max(): two pixels of no variance and equal luminance keep the weight (0 / tiny), unequal ones lose it.
     float d2 = difference * difference / max(sigmaLuminance * sigmaLuminance * (varianceQ + varianceP), 1e-30f);

@@ -87,7 +87,7 @@ void atrousThread(uint group, uint local) {
             if (r.id != centre.id) continue;
             float4 c = CAUSTICS_TEXEL(inColor, t);
             total += atrousSpreadWeight(int2(dx, dy), s, centre.depth, r.depth, centre.gradient, centre.normal, r.normal, lq,
-                                        filterLuminance(c.rgb), vq, c.a * c.a, params.sigmaLuminance);
+                                        filterLuminance(c.rgb), vq, c.a * c.a, params.sigmaLuminance, params.depthJitter);
         }
     }
     atrousStore(p, own, total);   // >= the centre's own weight 9/64 > 0
@@ -110,7 +110,7 @@ void atrousThread(uint group, uint local) {
             if (q.id != centre.id) continue;
             float vq = c.a * c.a;
             float share = atrousSpreadWeight(int2(-dx, -dy), s, q.depth, centre.depth, q.gradient, q.normal, centre.normal,
-                                             filterLuminance(c.rgb), lp, vq, vp, params.sigmaLuminance) /
+                                             filterLuminance(c.rgb), lp, vq, vp, params.sigmaLuminance, params.depthJitter) /
                           CAUSTICS_TEXEL(sums, t).x;
             sum += share * c.rgb;
             variance += share * share * vq;

@@ -9,18 +9,24 @@
 // non-zero luminance of this frame in the 7x7 window (a pixel that one photon reached), E[l] is
 // max(own, 3x3 mean) of the accumulated luminance: a pixel that no photon reached inside a lit region is
 // a draw of zero from the region's mean, so it gets that mean's noise and the a-trous passes fill it.
-// SVGF's 7x7 sample variance would count a focal spot's own shape as noise and blur it away.
+// SVGF's 7x7 sample variance would count a focal spot's own shape as noise and blur it away. The second
+// type's step differs between pixels with its gather disk's area (photon weights, second_type_guides.h),
+// and a pixel whose guides were filled from a neighbour's counts as one draw of the path its sample
+// took (docs/caustics.md "Second-type guides").
 // Output (pool, pre-exposed): rgb the mean, alpha the standard deviation of the accumulated mean,
 // sqrt(per-frame variance / n). Over the listed tiles; a neighbour in a tile without a pool tile counts
 // as zero in the 3x3 means. Entries: variance.comp, variance.hlsl.
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (variance_bindings.h), 12 bytes.
+// Push constants (variance_bindings.h), 16 bytes.
 struct VarianceParams {
     int width;
     int height;
     float preExposure;   // this frame's (docs/caustics.md "Memory")
+    // 1: gNormal.w holds each pixel's photon weight (the second type's guides, second_type_guides.h): one
+    // photon's step in luminance differs from pixel to pixel in proportion to it.
+    uint photonWeights;
 };
 CAUSTICS_CONST float kVarianceTemporalHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
 
@@ -61,7 +67,13 @@ float varianceLocalMeanTemporal(int2 p, uint id) {
     return sum / max(count, 1.0f);
 }
 
-// Photon shot noise q E[l] for a short history (above).
+// A pixel's photon weight (VarianceParams::photonWeights), 1 where the pixels share one step; negative
+// where the pixel's guides were filled from a neighbour's (second_type_guide_fill.h): its sample took
+// another path, whose luminance says nothing about this receiver's step.
+float variancePhotonWeight(int2 q) { return params.photonWeights != 0u ? CAUSTICS_TEXEL(gNormal, q).w : 1.0f; }
+
+// Photon shot noise q E[l] for a short history (above). With photon weights w (the second type through
+// curved glass) the step is w_p times the smallest per-weight luminance l / w of the window.
 float varianceShotNoise(int2 p, uint id, float accumulatedLuminance) {
     float quantum = 3.0e38f;
     float localSum = 0.0f, localCount = 0.0f;
@@ -70,7 +82,8 @@ float varianceShotNoise(int2 p, uint id, float accumulatedLuminance) {
             int2 q = p + int2(dx, dy);
             if (!filterInside(q, params.width, params.height) || CAUSTICS_TEXEL_UINT(gObjectId, q) != id) continue;
             float l = filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure);
-            if (l > 0.0f) quantum = min(quantum, l);
+            float w = variancePhotonWeight(q);
+            if (l > 0.0f && w > 0.0f) quantum = min(quantum, l / w);
             if (abs(dx) <= 1 && abs(dy) <= 1) {
                 int2 t = variancePoolTexel(q);
                 if (t.x >= 0) localSum += filterLuminance(CAUSTICS_TEXEL(temporalColor, t).rgb);
@@ -79,7 +92,11 @@ float varianceShotNoise(int2 p, uint id, float accumulatedLuminance) {
         }
     }
     float expected = max(accumulatedLuminance, localSum / max(localCount, 1.0f));
-    return quantum < 3.0e38f ? quantum * expected : 0.0f;
+    // A filled pixel's value is one draw of which path its sample took (zero where it left the scene):
+    // its deviation is of the order of the mean itself, not of one photon's step.
+    float ownWeight = variancePhotonWeight(p);
+    if (ownWeight < 0.0f) return expected * expected;
+    return quantum < 3.0e38f ? quantum * ownWeight * expected : 0.0f;
 }
 
 void varianceThread(uint group, uint2 local) {

@@ -88,7 +88,7 @@ struct CausticSphere {
     glm::vec3 normal;        // unit, on the side the camera path arrived from
     uint32_t pixel;          // the camera pixel it gathers for (y x W + x)
     glm::vec3 outgoing;      // unit, from the receiver back along the camera path (wo of the gather's BRDF)
-    float pad;
+    uint32_t likelyPath;     // 1: every specular event took its most probable lobe (the filter's guides)
 };
 static_assert(sizeof(CausticSphere) == 64);
 

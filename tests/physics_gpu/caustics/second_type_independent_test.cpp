@@ -186,6 +186,7 @@ void expectOneFilteredFrameWithoutHoles(rhi::IDevice& device, const IndependentC
                 "(1 frame) %.4f, unfiltered (4 frames) %.4f\n", c.name.c_str(), holes, inside, l1Filtered / sum, l1Unfiltered / sum);
     dumpLuminance(c.name + " one frame filtered", f, kSize);
     dumpLuminance(c.name + " four frames unfiltered", u, kSize);
+    dumpLuminance(c.name + " one frame reference", r, kSize);
     ASSERT_GT(inside, minPixels);
     EXPECT_EQ(holes, 0u);
     if (filterMustBeatFourFrames) {

@@ -20,7 +20,7 @@ TEST(AtrousBody, SpreadWeightIsTheKernelOnAPlaneAndStopsAtEdges) {
         for (int dx = -2; dx <= 2; ++dx) {
             const int2 offset = int2(dx, dy) * 2;
             const float zp = 5.0f + glm::dot(grad, float2(offset));
-            const float w = atrousSpreadWeight(int2(dx, dy), 2, 5.0f, zp, grad, n, n, 1.0f, 1.0f, 0.1f, 0.1f, 1.0f);
+            const float w = atrousSpreadWeight(int2(dx, dy), 2, 5.0f, zp, grad, n, n, 1.0f, 1.0f, 0.1f, 0.1f, 1.0f, 0.0f);
             // zp's float rounding (half an ulp at 5, 2.4e-7) over the depth term's scale (>= 0.02): <= 1.2e-5.
             const float tap = atrousKernelTap(std::abs(dx)) * atrousKernelTap(std::abs(dy));
             EXPECT_NEAR(w, tap, 2e-5f * tap);
@@ -30,11 +30,11 @@ TEST(AtrousBody, SpreadWeightIsTheKernelOnAPlaneAndStopsAtEdges) {
     const float centre = atrousKernelTap(0) * atrousKernelTap(0);
     // Var_q + Var_p = 0.02, sigma 1: a difference of 3 sqrt(0.02) is 3 deviations.
     const float lum = atrousSpreadWeight(int2(0), 1, 5.0f, 5.0f, grad, n, n, 1.0f, 1.0f + 3.0f * std::sqrt(0.02f), 0.01f,
-                                         0.01f, 1.0f);
+                                         0.01f, 1.0f, 0.0f);
     EXPECT_NEAR(lum / centre, std::exp(-4.5f), 1e-5f);
     const float c10 = std::cos(glm::radians(10.0f));
     const float3 tilted(std::sin(glm::radians(10.0f)), 0.0f, c10);
-    EXPECT_NEAR(atrousSpreadWeight(int2(0), 1, 5.0f, 5.0f, grad, n, tilted, 1.0f, 1.0f, 0.01f, 0.01f, 1.0f) / centre,
+    EXPECT_NEAR(atrousSpreadWeight(int2(0), 1, 5.0f, 5.0f, grad, n, tilted, 1.0f, 1.0f, 0.01f, 0.01f, 1.0f, 0.0f) / centre,
                 std::pow(c10, 128.0f), 1e-5f);
 }
 
