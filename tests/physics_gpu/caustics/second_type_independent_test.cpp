@@ -145,8 +145,9 @@ TEST_F(SecondTypeIndependent, RingThroughPaneMatches) {
 // One frame without holes (issue 18): at 1 ray per texel (map 512^2, the sample's default) with the filter on,
 // no pixel where the reference exceeds 10 % of its peak is zero, and the filtered single frame is closer to
 // the reference (relative L1 over those pixels) than the mean of 4 unfiltered frames.
-// filterMustBeatFourFrames: the L1 comparison is asserted (else only printed); minPixels: caustic pixels expected.
-void expectOneFilteredFrameWithoutHoles(rhi::IDevice& device, const IndependentCase& c, uint32_t kSize, bool filterMustBeatFourFrames,
+// maxL1Ratio: the filtered frame's L1 over that of the 4 unfiltered frames must stay below it (1: the issue's
+// criterion); minPixels: caustic pixels expected.
+void expectOneFilteredFrameWithoutHoles(rhi::IDevice& device, const IndependentCase& c, uint32_t kSize, double maxL1Ratio,
                                         uint32_t minPixels) {
     CausticsSettings s = secondTypeSettings(512, 1.0f);
     s.filter = true;
@@ -189,26 +190,23 @@ void expectOneFilteredFrameWithoutHoles(rhi::IDevice& device, const IndependentC
     dumpLuminance(c.name + " one frame reference", r, kSize);
     ASSERT_GT(inside, minPixels);
     EXPECT_EQ(holes, 0u);
-    if (filterMustBeatFourFrames) {
-        EXPECT_LT(l1Filtered, l1Unfiltered);
-    }
+    EXPECT_LT(l1Filtered, maxL1Ratio * l1Unfiltered);
 }
 
-// The ball from above, offsets 0..2: 0 zero pixels of ~2,350 each time; L1 filtered 0.077 / 0.095 / 0.084
-// against 0.126 / 0.128 / 0.128 (the filtered L1, 0.085 +- 0.009, lies 4.5 standard deviations below the unfiltered one).
-// With the second type filtered on its own guides (docs/caustics.md "Second-type guides"), offset 0:
-// 0 zero pixels of 2,341, L1 0.0935 against 0.1265.
+// The ball from above, second type filtered on its own guides (docs/caustics.md "Second-type guides"),
+// offsets 0..3: 0 zero pixels of ~2,345 each time; L1 filtered 0.0742 / 0.0778 / 0.0785 / 0.0809 against
+// 0.1265 / 0.1261 / 0.1275 / 0.1279 (ratio 0.615 +- 0.022: the bound 1 lies 17 standard deviations away).
 TEST_F(SecondTypeIndependent, FilteredSingleFrameHasNoHolesAndBeatsFourUnfilteredFrames) {
-    expectOneFilteredFrameWithoutHoles(*device, ballFromAbove(), 96, true, 1000);
+    expectOneFilteredFrameWithoutHoles(*device, ballFromAbove(), 96, 1.0, 1000);
 }
 
-// The water glass: no zero pixel among the 591 (offset 0), but the filtered frame is FARTHER from the
-// reference than 4 unfiltered frames (relative L1 0.477 against 0.292 with the filter on the glass's
-// G-buffer; 0.495 against 0.286 with the second type filtered on its own guides, offset 0, 590 pixels, none
-// zero): through the curved wall neighbouring pixels see floor points far apart, the receiver guides
-// differ between them and single bright pixels survive. Not met; the L1 comparison is printed, not asserted.
+// The water glass, offsets 0..3: no zero pixel among 590-658; the filtered frame is still a little FARTHER from
+// the reference than 4 unfiltered frames: L1 0.2982 / 0.3238 / 0.3254 / 0.3248 against 0.2855 / 0.3002 / 0.3008 /
+// 0.2935, ratio 1.078 +- 0.026 (the issue's 1 is NOT met; before the likely-path guides, photon weights and
+// the jittered depth test, 0.495 against 0.286 at offset 0: 1.73). The bound 1.25 lies 6.6 standard
+// deviations above the mean and guards the gain (docs/physics.md "One frame").
 TEST_F(SecondTypeIndependent, FilteredSingleFrameOfTheWaterGlassHasNoHoles) {
-    expectOneFilteredFrameWithoutHoles(*device, waterGlass(), 96, false, 500);
+    expectOneFilteredFrameWithoutHoles(*device, waterGlass(), 96, 1.25, 500);
 }
 
 }  // namespace
