@@ -1,7 +1,8 @@
 #ifndef CAUSTICS_PASS_SECOND_TYPE_GUIDE_FILL_H
 #define CAUSTICS_PASS_SECOND_TYPE_GUIDE_FILL_H
 // Fills the second type's guides where this frame's backward sample made no sphere (it was reflected
-// away, with probability R, or left the scene), in the shared dialect (docs/shaders.md; docs/caustics.md
+// away, with probability R, or left the scene) or made one along a less probable lobe (its guides are
+// not written: second_type_guides.h), in the shared dialect (docs/shaders.md; docs/caustics.md
 // "Second-type guides"). Such a pixel's second type is a legitimate zero of the estimate, but with
 // guide id 0 the filter could not average it with its neighbours and it would stay a hole. It takes the
 // guides of the first of its 8 neighbours (fixed order: deterministic) that has a sphere and shows the
