@@ -12,6 +12,7 @@
 #include "common/camera.h"
 #include "common/caster_motion.h"
 #include "common/caustic_hit.h"
+#include "common/luminance.h"
 #include "common/resources.h"
 
 CAUSTICS_SHARED_BEGIN
@@ -59,8 +60,7 @@ CAUSTICS_FN float2 guideTexel(float4 clip, float2 size) {
 // depth (depth^2 x pixel solid angle), which keeps it near 1 / magnification^2 in half precision.
 CAUSTICS_FN float secondTypePhotonWeight(CameraConstants c, CausticSphere s, float linearDepth) {
     float unfoldedArea = linearDepth * linearDepth * pinholePixelArea(cameraPinhole(c));
-    float lumT = dot(s.transmittance, float3(0.2126f, 0.7152f, 0.0722f));
-    return lumT * unfoldedArea / max(3.14159265f * s.radius * s.radius, 1.0e-30f);
+    return rec709Luminance(s.transmittance) * unfoldedArea / max(kPi * s.radius * s.radius, 1.0e-30f);
 }
 
 CAUSTICS_FN SecondTypeGuide secondTypeGuide(CameraConstants c, CausticSphere s, float2 size) {

@@ -4,6 +4,7 @@
 // "Tiles", "Memory"): the tiles, the pool, luminance; and, GLSL and HLSL only, the bit casts, the
 // rounding to half and the group-shared memory spellings.
 #include "common/lang.h"
+#include "common/luminance.h"
 
 CAUSTICS_SHARED_BEGIN
 // The filter runs over 8x8 pixel tiles, one 8x8 group (64 threads) per listed tile (the list of
@@ -22,8 +23,8 @@ CAUSTICS_FN int2 filterPoolTexel(uint slot, int2 p) {
 }
 CAUSTICS_FN bool filterInside(int2 p, int width, int height) { return p.x >= 0 && p.y >= 0 && p.x < width && p.y < height; }
 
-// Rec. 709 luminance: the scalar whose moments and differences guide the filter (SVGF section 4.2).
-CAUSTICS_FN float filterLuminance(float3 c) { return dot(c, float3(0.2126f, 0.7152f, 0.0722f)); }
+// The scalar whose moments and differences guide the filter (SVGF section 4.2): common/luminance.h.
+CAUSTICS_FN float filterLuminance(float3 c) { return rec709Luminance(c); }
 CAUSTICS_SHARED_END
 
 #if !defined(CAUSTICS_LANG_CPP)
