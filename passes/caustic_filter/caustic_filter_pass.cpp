@@ -87,11 +87,11 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                         rg::RgTexture& output, bool jitteredGuides) {
     const CausticsSettings& s = f.in->settings;
     const bool last = i + 1 == s.atrousIterations;
-    const std::string name = "caustics.atrous." + std::to_string(i);
+    const std::string name = "caustics.atrous." + std::to_string(i), run = f.filterRun;
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
                                     1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f};
     rg::RgTexture sums;
-    graph.addPass(name + ".weights", [&](rg::PassBuilder& b) {
+    graph.addPass(name + ".weights" + run, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide);
         readTiles(b, ff.tiles, true);
@@ -110,7 +110,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                              push, t.args);
         };
     });
-    graph.addPass(name, [&](rg::PassBuilder& b) {
+    graph.addPass(name + run, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide), w = b.read(sums);
         readTiles(b, ff.tiles, true);
@@ -141,7 +141,7 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
                      bool historyUsable, uint32_t readCopy, bool motionGuides) {
     const GBuffer& g = f.in->gbuffer;
     const uint32_t next = readCopy ^ 1u, frameIndex = f.in->frameIndex;
-    graph.addPass("caustics.temporal", [&](rg::PassBuilder& b) {
+    graph.addPass(std::string("caustics.temporal") + f.filterRun, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.normalRoughness), b.read(g.objectId),
@@ -232,7 +232,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     const rg::RgTexture color = hist.color, guides = hist.guides;
 
     if (s.atrousIterations == 0) {
-        graph.addPass("caustics.filterOutput", [&](rg::PassBuilder& b) {
+        graph.addPass(std::string("caustics.filterOutput") + f.filterRun, [&](rg::PassBuilder& b) {
             b.setStages(rhi::PipelineStages::Compute);
             const rg::RgTexture in[] = {b.read(color), b.read(guides)};
             readTiles(b, ff.tiles, false);
@@ -254,7 +254,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         return ff.tiles.args;
     }
     rg::RgTexture radiance;
-    graph.addPass("caustics.variance", [&](rg::PassBuilder& b) {
+    graph.addPass(std::string("caustics.variance") + f.filterRun, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in[] = {b.read(raw), b.read(color), b.read(guides), b.read(g.objectId), b.read(g.normalRoughness)};
         readTiles(b, ff.tiles, true);
@@ -328,6 +328,7 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     CausticFrame secondFrame = f;
     secondFrame.in = &receiver;
     secondFrame.history = f.history->secondType.get();
+    secondFrame.filterRun = ".secondType";
     addFilterChain(graph, secondFrame, out.secondType, true);
     f.camera = secondFrame.camera;
     addCombinePass(graph, f, out);

@@ -40,7 +40,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
     const uint32_t w = f.width, h = f.height, tilesX = (w + 7) / 8, tilesY = (h + 7) / 8;
     const uint32_t capacity = f.history->poolTiles;
     FilterTiles t;
-    graph.addPass("caustics.filterTiles", [&](rg::PassBuilder& b) {
+    graph.addPass(std::string("caustics.filterTiles") + f.filterRun, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const GBuffer& g = f.in->gbuffer;
@@ -63,7 +63,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
                 ctx.cmd().dispatch(tilesX, tilesY);   // one group per tile
         };
     });
-    graph.addPass("caustics.filterTiles.clear", [&](rg::PassBuilder& b) {
+    graph.addPass(std::string("caustics.filterTiles.clear") + f.filterRun, [&](rg::PassBuilder& b) {
         t.args = b.write(b.createBuffer("caustics.filterTileArgs",
                                         rhi::BufferDesc().setByteSize(16)
                                             .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::Indirect |
@@ -77,7 +77,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
             ctx.cmd().fillBuffer(ctx.buffer(args), 0u, 12, 4);
         };
     });
-    graph.addPass("caustics.filterTiles.list", [&](rg::PassBuilder& b) {
+    graph.addPass(std::string("caustics.filterTiles.list") + f.filterRun, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         hist.tiles = b.write(hist.tiles, rg::Access::StorageReadWrite);
         hist.slots = b.write(hist.slots);
@@ -101,7 +101,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
             else dispatchImage(ctx, *fr.res, fr.res->filter.tileList, fr.res->filter.tileListLayout, std::move(*d), push, tilesX, tilesY);
         };
     });
-    graph.addPass("caustics.filterTiles.count", [&](rg::PassBuilder& b) {
+    graph.addPass(std::string("caustics.filterTiles.count") + f.filterRun, [&](rg::PassBuilder& b) {
         t.args = b.read(t.args, rg::Access::CopySource);
         b.setSideEffects();   // writes a host-visible buffer the graph does not track
         rg::RgBuffer args = t.args;

@@ -136,6 +136,9 @@ struct CausticFrame {
     rg::RgTexture mapIds, mapDepth;
     rg::RgAccelStruct sphereBlas, sphereTlas;
     SecondTypeGuides secondTypeGuides;   // caustics.secondTypeGuides (invalid without the second type)
+    // Appended to the filter's pass names: "" for the filter run on the camera G-buffer, ".secondType"
+    // for the second type's own run (docs/caustics.md "Second-type guides"), so both are timed apart.
+    const char* filterRun = "";
     // Instance and caster motion (docs/caustics.md "Moving casters", "Moving objects"): 3 rows per instance
     // (instanceMotion; empty when no instance moved), and the per-pixel sums the forward pass accumulates
     // from them (4 words per pixel when a caster moved, else a 16-byte placeholder the passes bind).

@@ -14,6 +14,7 @@ CausticsSettings benchSettings(const BenchOptions& o) {
     s.raysPerTexel = o.raysPerTexel;
     s.maxSpecularDepth = o.maxDepth;
     s.filter = o.filter;
+    s.filterSecondTypeApart = o.filterSecondTypeApart;
     s.mapOccluders = o.mapOccluders;
     s.photonsPerFrame = o.photons;
     s.causticTimeTargetMs = o.timeTargetMs;

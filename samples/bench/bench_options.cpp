@@ -82,6 +82,10 @@ Status setOption(BenchOptions& o, std::string_view flag, std::string_view value)
     } else if (flag == "--filter") {
         if (value != "on" && value != "off") return makeError("--filter: expected on or off, got '" + std::string(value) + "'");
         o.filter = value == "on";
+    } else if (flag == "--filter-second-type") {
+        if (value != "apart" && value != "merged")
+            return makeError("--filter-second-type: expected apart or merged, got '" + std::string(value) + "'");
+        o.filterSecondTypeApart = value == "apart";
     } else if (flag == "--view") {
         if (value != "visible" && value != "away")
             return makeError("--view: expected visible or away, got '" + std::string(value) + "'");
@@ -126,6 +130,8 @@ std::string benchUsage() {
         "  --depth D                   specular events per caustic path, 1 .. 31 (default 4)\n"
         "  --map-size N                caustic map side, 1 .. 8192 (default 512)\n"
         "  --filter on|off             caustic filter (default off, as the paper measured)\n"
+        "  --filter-second-type apart|merged  second type filtered on its own guides or with the first\n"
+        "                              (default merged, CausticsSettings::filterSecondTypeApart)\n"
         "  --view visible|away         caustics, frame: the scene's camera, or turned away from every caustic\n"
         "  --map-occluders on|off      caustic maps also draw occluders (default off: specular objects only)\n"
         "  --out DIR                   sweep, figures, memory: folder for the CSV / PFM files (created)\n"

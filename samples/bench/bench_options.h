@@ -25,6 +25,7 @@ struct BenchOptions {
     uint32_t maxDepth = 4;
     uint32_t mapResolution = 512;
     bool filter = false;            // the paper measured with the filter off
+    bool filterSecondTypeApart = false;   // CausticsSettings::filterSecondTypeApart
     bool viewAway = false;          // caustics / frame: the camera turned away from every caustic (--view away)
     bool mapOccluders = false;      // CausticsSettings::mapOccluders
     std::string outDir;             // sweep: where the CSV files go

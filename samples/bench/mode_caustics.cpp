@@ -39,12 +39,14 @@ void printCounters(const Measurement& m) {
 }
 
 // The caustic filter's passes (passes/caustic_filter: the tile passes, temporal, variance, a-trous,
-// filterOutput; not caustics.resolve, which runs with the filter off too).
+// filterOutput, each once more with ".secondType" appended when the second type is filtered apart, and
+// then filterCombine; not caustics.resolve, which runs with the filter off too, nor the second type's
+// guides, written by the backward trace).
 double filterMs(const Measurement& m) {
     double sum = 0.0;
     for (const auto& [pass, ms] : m.passMs)
         for (const char* prefix : {"caustics.filterTiles", "caustics.temporal", "caustics.variance", "caustics.atrous.",
-                                   "caustics.filterOutput"})
+                                   "caustics.filterOutput", "caustics.filterCombine"})
             if (pass.rfind(prefix, 0) == 0) sum += ms;
     return sum;
 }

@@ -96,6 +96,8 @@ const char* cliUsage() {
            "  --max-stored-hits N     forward hits kept for the second type (default 1048576)\n"
            "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
            "  --no-second-type        skip caustics seen through glass (the backward sphere pass)\n"
+           "  --filter-second-type-apart  filter the caustics seen through glass on the surface they lie on\n"
+           "                          (own guides and history; more memory, docs/caustics.md \"Second-type guides\")\n"
            "  --map-occluders         caustic maps also draw occluders (default: specular objects only)\n"
            "  --exposure X            linear exposure before tone mapping (default 1)\n"
            ) + sampleControlsUsage() + animationUsage() + std::string(
@@ -159,6 +161,7 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
         if (a == "--window") { o.window = true; continue; }
         if (a == "--no-filter") { o.filter = false; continue; }
         if (a == "--no-second-type") { o.secondType = false; continue; }
+        if (a == "--filter-second-type-apart") { o.filterSecondTypeApart = true; continue; }
         if (a == "--map-occluders") { o.mapOccluders = true; continue; }
         if (a == "--reference") { o.reference = true; continue; }
         if (a == "--validation") { o.validation = true; continue; }

@@ -45,6 +45,7 @@ struct CliOptions {
     uint32_t maxDepth = 4;
     uint32_t maxStoredHits = 1u << 20;
     bool filter = true;
+    bool filterSecondTypeApart = false;   // CausticsSettings::filterSecondTypeApart
     bool secondType = true;
     bool mapOccluders = false;
     float exposure = 1.0f;

@@ -48,6 +48,7 @@ CausticsSettings settingsFromOptions(const sample::CliOptions& o) {
     s.maxSpecularDepth = o.maxDepth;
     s.maxStoredHits = o.maxStoredHits;
     s.filter = o.filter;
+    s.filterSecondTypeApart = o.filterSecondTypeApart;
     s.secondType = o.secondType;
     s.mapOccluders = o.mapOccluders;
     s.exposure = o.exposure;

@@ -80,6 +80,7 @@ const std::map<std::string, Setter>& setters() {
         {"filter", boolField(&CausticsSettings::filter)},
         {"filterMaxHistory", countField(&CausticsSettings::filterMaxHistory)},
         {"filterCasterMotion", boolField(&CausticsSettings::filterCasterMotion)},
+        {"filterSecondTypeApart", boolField(&CausticsSettings::filterSecondTypeApart)},
         {"atrousIterations", countField(&CausticsSettings::atrousIterations)},
         {"filterLuminanceSigma", floatField(&CausticsSettings::filterLuminanceSigma)},
         {"exposure", floatField(&CausticsSettings::exposure)},

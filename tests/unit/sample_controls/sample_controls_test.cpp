@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "caustics/caustics_settings.h"
 #include "cli_options.h"
 
 namespace caustics::sample {
@@ -40,6 +41,16 @@ TEST(SampleControls, ParsesEveryControl) {
     EXPECT_EQ(r->controls.sphereRadiusPolicy, SphereRadiusChoice::World);
     EXPECT_FLOAT_EQ(r->controls.sphereWorldRadius, 0.02f);
     EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 3.5f);
+}
+
+// The second type is filtered with the camera G-buffer unless asked (CausticsSettings' default).
+TEST(SampleControls, SecondTypeFilteredApartOnlyWhenAsked) {
+    auto plain = parse({});
+    ASSERT_TRUE(plain.ok());
+    EXPECT_EQ(plain->filterSecondTypeApart, CausticsSettings{}.filterSecondTypeApart);
+    auto apart = parse({"--filter-second-type-apart"});
+    ASSERT_TRUE(apart.ok()) << apart.message();
+    EXPECT_TRUE(apart->filterSecondTypeApart);
 }
 
 TEST(SampleControls, RefusesBadValuesNamingTheOptionAndRange) {
