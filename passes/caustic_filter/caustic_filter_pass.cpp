@@ -3,16 +3,18 @@
 // the 8x8 tiles that received photons or still hold history (docs/caustics.md "Tiles"), each listed tile
 // owning one tile of the filter's pool images (docs/caustics.md "Memory": the filter's memory follows
 // the caustics' coverage, not the screen; its values are pre-exposed half precision):
+//   caustics.filterHistoryGrow  after the pool grew: last frame's history into the grown pool
 //   caustics.filterTiles  the view's tile state, the tile list and slot map (filter_tile_passes.cpp)
 //   caustics.temporal   reprojected history, disocclusion tests, 1/n average up to the history cap; writes
 //                       this frame's copy of the ping-ponged history (the result, unfiltered, its
 //                       luminance deviation, the guides) and the a-trous guide, packed once per frame
 //   caustics.variance   luminance variance: temporal moments, or photon shot noise for short histories
 //   caustics.atrous.N   edge-aware a-trous iterations stopping at depth, normal, object and luminance,
-//                       energy-preserving, one pass each (the weight sums in shared memory)
+//                       energy-preserving: the weight sums (.weights), then the shares
 //   caustics.filterOutput  (atrousIterations 0 only) the temporal result into caustics.radiance
 // The last pass writes into caustics.radiance, over the listed tiles (the others hold this frame's zeros).
-// With settings.filter off the combined radiance is returned unfiltered.
+// With settings.filter off the combined radiance is returned unfiltered. The second type filtered apart
+// runs every pass again with ".secondType" after its name, then caustics.filterCombine.
 #include <string>
 
 #include "caustic_filter/atrous_bindings.h"
@@ -221,6 +223,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     const bool historyUsable = vh.builtValid && !f.in->resetHistory;
     // The next graph built reads what this one writes (caustic_passes.h, CausticViewHistory::builtParity).
     const uint32_t readCopy = vh.builtParity;
+    addPoolGrowthPass(graph, f, hist, readCopy, historyUsable);
     vh.builtParity ^= 1u;
     vh.builtValid = true;
     // caustics.resolve's radiance: this frame's photons, zero in every tile the list leaves out.

@@ -75,6 +75,9 @@ struct HistoryHandles {
     rg::RgTexture color, guides, tiles, slots;
 };
 HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& history);
+// caustics.filterHistoryGrow: after the pool grew (CausticViewHistory::growth), the copy this frame reads
+// moves from the smaller pool's textures into hist's (a slot keeps its place); the old textures retire.
+void addPoolGrowthPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, uint32_t readCopy, bool historyUsable);
 
 // The filter's tile list (caustics.filterTiles.list, shaders/tiles.h): `args` (listed tiles with a pool tile, 1, 1, tiles wanted)
 // for the indirect dispatches, `list` the packed tiles (list index = pool tile), `slots` this frame's

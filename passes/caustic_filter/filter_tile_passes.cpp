@@ -3,6 +3,7 @@
 // tile's pool tile) and .count (the tiles wanted, read back to size the pool).
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "caustic_filter/filter_graph.h"
 #include "caustic_filter/shaders/tiles.h"
@@ -18,18 +19,47 @@ float filterPreExposure(const CausticFrame& f) {
 HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& history) {
     const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
     const rhi::ResourceState now = history.builtValid ? ro : rhi::ResourceState::Undefined;
-    auto import = [&](const char* name, const rhi::TextureHandle (&t)[2], uint32_t i) {
-        return graph.importTexture(std::string(name) + std::to_string(i), t[i], now, ro);
+    // A grown pool's new textures hold nothing yet (the growth pass fills the copy this frame reads).
+    const rhi::ResourceState pool = history.freshPool ? rhi::ResourceState::Undefined : now;
+    auto import = [&](const char* name, const rhi::TextureHandle (&t)[2], uint32_t i, rhi::ResourceState state) {
+        return graph.importTexture(std::string(name) + std::to_string(i), t[i], state, ro);
     };
     const uint32_t previous = history.builtParity, next = history.builtParity ^ 1u;
-    return {import("caustics.historyColor", history.color, previous),
-            import("caustics.historyGuides", history.guides, previous),
-            import("caustics.historyTiles", history.tiles, previous),
-            import("caustics.historySlots", history.slots, previous),
-            import("caustics.historyColor", history.color, next),
-            import("caustics.historyGuides", history.guides, next),
-            import("caustics.historyTiles", history.tiles, next),
-            import("caustics.historySlots", history.slots, next)};
+    return {import("caustics.historyColor", history.color, previous, pool),
+            import("caustics.historyGuides", history.guides, previous, pool),
+            import("caustics.historyTiles", history.tiles, previous, now),
+            import("caustics.historySlots", history.slots, previous, now),
+            import("caustics.historyColor", history.color, next, pool),
+            import("caustics.historyGuides", history.guides, next, pool),
+            import("caustics.historyTiles", history.tiles, next, now),
+            import("caustics.historySlots", history.slots, next, now)};
+}
+
+void addPoolGrowthPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, uint32_t readCopy, bool historyUsable) {
+    CausticViewHistory& h = *f.history;
+    h.freshPool = false;
+    if (!h.growth) return;
+    CausticViewHistory::PoolGrowth growth = std::move(*h.growth);
+    h.growth.reset();
+    std::vector<rhi::TextureHandle>& retired = f.res->retiredTextures[f.res->frameSlot];
+    for (uint32_t i = 0; i < 2; ++i) {
+        retired.push_back(growth.color[i]);
+        retired.push_back(growth.guides[i]);
+    }
+    if (!historyUsable) return;   // nothing to keep
+    const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
+    const rg::RgTexture oldColor = graph.importTexture("caustics.historyColorBeforeGrowth", growth.color[readCopy], ro, ro);
+    const rg::RgTexture oldGuides = graph.importTexture("caustics.historyGuidesBeforeGrowth", growth.guides[readCopy], ro, ro);
+    graph.addPass(std::string("caustics.filterHistoryGrow") + f.filterRun, [&](rg::PassBuilder& b) {
+        const rg::RgTexture from[] = {b.read(oldColor, rg::Access::CopySource), b.read(oldGuides, rg::Access::CopySource)};
+        hist.previousColor = b.write(hist.previousColor, rg::Access::CopyDest);
+        hist.previousGuides = b.write(hist.previousGuides, rg::Access::CopyDest);
+        const rg::RgTexture to[] = {hist.previousColor, hist.previousGuides};
+        const rhi::TextureRegion region = rhi::TextureRegion().setSize(filterPoolWidth(), growth.rows * 8);
+        return [=](rg::PassContext& ctx) {
+            for (int i = 0; i < 2; ++i) ctx.cmd().copyTexture(ctx.texture(to[i]), region, ctx.texture(from[i]), region);
+        };
+    });
 }
 
 // caustics.filterTiles: this frame's tile state (shaders/tiles.h), then caustics.filterTiles.clear sets the

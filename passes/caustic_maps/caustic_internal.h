@@ -86,6 +86,8 @@ struct CausticResources::Impl {
         rhi::AccelStructHandle blas;
     };
     std::vector<std::vector<RetiredSphereStructure>> retiredSphereStructures;
+    // Filter history textures replaced by a grown pool, per frame slot, kept the same way.
+    std::vector<std::vector<rhi::TextureHandle>> retiredTextures;
     // Sphere counts read back per view (keyed by its history) and frame slot (backward_trace/caustics/sphere_capacity.h).
     std::map<uint64_t, std::vector<SphereCountReadback>> sphereCounts;   // by CausticViewHistory::viewId
     CausticViewHistory ownHistory;   // used when CausticFrameInputs::history is null
@@ -101,7 +103,7 @@ struct CausticResources::Impl {
 
     Status ensureScenePipelines(const rhi::BindingLayoutHandle& sceneLayout);
     Status ensureSizeResources(uint32_t pixels, uint32_t initialSphereAllocation, uint32_t frameSlot);
-    Status ensureHistory(CausticViewHistory& history, uint32_t width, uint32_t height);
+    Status ensureHistory(CausticViewHistory& history, uint32_t width, uint32_t height, uint32_t requestedPoolTiles);
     // Binding set for this frame (kept alive); null after logging the error.
     rhi::BindingSetHandle makeSet(rhi::IDevice& device, const rhi::BindingLayoutHandle& layout,
                                   rhi::BindingSetDesc desc);

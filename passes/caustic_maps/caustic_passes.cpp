@@ -150,9 +150,11 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     res->frameSlot = slot;
     res->frameSets[res->frameSlot].clear();
     res->retiredSphereStructures[res->frameSlot].clear();
+    res->retiredTextures[res->frameSlot].clear();
     if (in.settings.secondType) CAUSTICS_CHECK(res->ensureSizeResources(pixels, firstSphereAllocation, res->frameSlot));
     CausticViewHistory* history = in.history ? in.history : &res->ownHistory;
-    if (in.settings.filter) CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height));
+    if (in.settings.filter)
+        CAUSTICS_CHECK(res->ensureHistory(*history, in.gbuffer.width, in.gbuffer.height, in.settings.filterPoolTiles));
     // The second type is filtered apart, on its own guides (docs/caustics.md "Second-type guides").
     const bool filterTypesApart = in.settings.filter && in.settings.secondType && in.settings.filterSecondTypeApart;
     if (filterTypesApart) {
@@ -160,7 +162,7 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
             history->secondType = std::make_shared<CausticViewHistory>();
             history->secondType->viewId = history->viewId;
         }
-        CAUSTICS_CHECK(res->ensureHistory(*history->secondType, in.gbuffer.width, in.gbuffer.height));
+        CAUSTICS_CHECK(res->ensureHistory(*history->secondType, in.gbuffer.width, in.gbuffer.height, in.settings.filterPoolTiles));
     }
 
     CausticFrame f;

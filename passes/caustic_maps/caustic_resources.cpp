@@ -38,6 +38,7 @@ Result<CausticResources> CausticResources::create(rhi::IDevice& d, uint32_t fram
     m.device = &d;
     m.frameSets.resize(framesInFlight);
     m.retiredSphereStructures.resize(framesInFlight);
+    m.retiredTextures.resize(framesInFlight);
     m.floatAtomics = d.capabilities().shaderFloatAtomicAdd;
     m.int64Atomics = d.capabilities().shaderBufferInt64Atomics;
     CAUSTICS_TRY(m.mapLayout, createPassBindingLayout(d, shader_bindings::kCausticMapBindings, 1, ShaderStage::All));
@@ -113,8 +114,9 @@ Status CausticResources::Impl::ensureSizeResources(uint32_t pixels, uint32_t ini
     return okStatus();
 }
 
-Status CausticResources::Impl::ensureHistory(CausticViewHistory& h, uint32_t width, uint32_t height) {
-    return ensureFilterHistory(*this, h, width, height);   // caustic_filter/filter_history.cpp
+Status CausticResources::Impl::ensureHistory(CausticViewHistory& h, uint32_t width, uint32_t height,
+                                             uint32_t requestedPoolTiles) {
+    return ensureFilterHistory(*this, h, width, height, requestedPoolTiles);   // caustic_filter/filter_history.cpp
 }
 
 rhi::BindingSetHandle CausticResources::Impl::makeSet(rhi::IDevice& d, const rhi::BindingLayoutHandle& l,

@@ -43,6 +43,7 @@ Status CausticsSettings::validate() const {
         return outOfRange("sphereMaxRadius", sphereMaxRadius, sphereMinRadius, 1e3f);
     if (filterMaxHistory < 1 || filterMaxHistory > kMaxFilterHistory)
         return outOfRange("filterMaxHistory", filterMaxHistory, 1u, kMaxFilterHistory);
+    if (filterPoolTiles > kMaxFilterPoolTiles) return outOfRange("filterPoolTiles", filterPoolTiles, 0u, kMaxFilterPoolTiles);
     if (atrousIterations > kMaxAtrousIterations)
         return outOfRange("atrousIterations", atrousIterations, 0u, kMaxAtrousIterations);
     if (!std::isfinite(filterLuminanceSigma) || filterLuminanceSigma <= 0.0f || filterLuminanceSigma > kMaxFilterLuminanceSigma)

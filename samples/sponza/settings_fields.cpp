@@ -79,6 +79,7 @@ const std::map<std::string, Setter>& setters() {
         {"maxStoredHits", countField(&CausticsSettings::maxStoredHits)},
         {"filter", boolField(&CausticsSettings::filter)},
         {"filterMaxHistory", countField(&CausticsSettings::filterMaxHistory)},
+        {"filterPoolTiles", countField(&CausticsSettings::filterPoolTiles)},
         {"filterCasterMotion", boolField(&CausticsSettings::filterCasterMotion)},
         {"filterSecondTypeApart", boolField(&CausticsSettings::filterSecondTypeApart)},
         {"atrousIterations", countField(&CausticsSettings::atrousIterations)},

@@ -74,6 +74,10 @@ struct CausticsSettings {
     // History length cap, frames: with a still view the temporal step is the plain mean of the last
     // frames until this many, then an exponential average with weight 1 / filterMaxHistory.
     uint32_t filterMaxHistory = 32;
+    // The filter history pool's first capacity, in 8x8 tiles (docs/caustics.md "Memory"); 0: a quarter of
+    // the view's tiles, at least 1024. The pool grows with the caustics' coverage, keeping its history;
+    // a host that knows its views' coverage sizes it here and never sees a frame outgrow it.
+    uint32_t filterPoolTiles = 0;
     // Reproject the caustic history with its caster's motion (docs/caustics.md "Moving casters"): when
     // a specular instance moved since the last frame, each photon carries where it would have landed
     // under last frame's transform, and the temporal step follows that instead of the receiver; a pixel
@@ -110,6 +114,7 @@ struct CausticsSettings {
     static constexpr uint32_t kMaxStoredHits = 1u << 26;
     static constexpr uint32_t kMaxFramesInFlight = 16;
     static constexpr uint32_t kMaxFilterHistory = 1024;
+    static constexpr uint32_t kMaxFilterPoolTiles = 1u << 21;   // a 16384^2 view
     static constexpr uint32_t kMaxAtrousIterations = 8;
     static constexpr float kMaxFilterLuminanceSigma = 1000.0f;
 

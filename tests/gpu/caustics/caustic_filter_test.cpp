@@ -257,6 +257,9 @@ TEST(CausticFilterSettings, AbsurdValuesAreRefusedNamingTheField) {
     s = {};
     s.atrousIterations = CausticsSettings::kMaxAtrousIterations + 1;
     EXPECT_NE(errorOf(s.validate()).find("atrousIterations"), std::string::npos);
+    s = {};
+    s.filterPoolTiles = CausticsSettings::kMaxFilterPoolTiles + 1;
+    EXPECT_NE(errorOf(s.validate()).find("filterPoolTiles"), std::string::npos);
     EXPECT_TRUE(CausticsSettings{}.validate());
 }
 
