@@ -31,6 +31,11 @@ Result<std::unique_ptr<BenchSession>> BenchSession::create(const rhi::DeviceHand
     return s;
 }
 
+uint32_t warmupFrames(const BenchOptions& o, const CausticsSettings& settings) {
+    if (o.warmupGiven || !settings.filter) return o.warmupFrames;
+    return std::max(o.warmupFrames, settings.filterMaxHistory + settings.framesInFlight + 8);
+}
+
 Result<Measurement> measure(const rhi::DeviceHandle& device, BenchSession& session, const CausticsSettings& settings,
                             uint32_t width, uint32_t height, BenchView view, const BenchOptions& o, bool readCaustics) {
     const scene::Scene& scene = session.scene;
@@ -38,7 +43,7 @@ Result<Measurement> measure(const rhi::DeviceHandle& device, BenchSession& sessi
     CAUSTICS_TRY(auto frames, BenchFrames::create(device, *session.module, width, height));
     frames->graph().setTimingWindow(o.frames);
     const scene::Camera camera = benchCamera(scene, view);
-    const uint32_t total = o.warmupFrames + o.frames;
+    const uint32_t total = warmupFrames(o, settings) + o.frames;
     for (uint32_t f = 0; f < total; ++f) CAUSTICS_CHECK(frames->render(camera, f, readCaustics && f + 1 == total));
 
     Measurement m;

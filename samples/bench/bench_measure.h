@@ -53,6 +53,12 @@ struct BenchSession {
                                                         const CausticsSettings& settings);
 };
 
+// Warm-up frames of a measurement: --warmup, or, with the filter on, enough for its steady state: the
+// history cap, then the frames in flight after which the pool's tile counts come back (docs/caustics.md "Cost":
+// a young history leaves more pixels dark, which the a-trous passes skip; 2 warm-up frames measured the
+// built-in scene's filter at 1.32 ms on the H200 against 1.69 ms after 60).
+uint32_t warmupFrames(const BenchOptions& options, const CausticsSettings& settings);
+
 // Renders warmup + frames frames with `settings`; readCaustics keeps the last frame's image.
 Result<Measurement> measure(const rhi::DeviceHandle& device, BenchSession& session, const CausticsSettings& settings,
                             uint32_t width, uint32_t height, BenchView view, const BenchOptions& options,

@@ -49,6 +49,7 @@ Status setOption(BenchOptions& o, std::string_view flag, std::string_view value)
         CAUSTICS_TRY(o.frames, parseCount(flag, value, 1, kMaxBenchFrames));
     } else if (flag == "--warmup") {
         CAUSTICS_TRY(o.warmupFrames, parseCount(flag, value, 0, kMaxBenchFrames));
+        o.warmupGiven = true;
     } else if (flag == "--triangles") {
         CAUSTICS_TRY(o.triangles, parseCount(flag, value, 12, kMaxBenchTriangles));
     } else if (flag == "--scene" || flag == "--scenes") {
@@ -121,7 +122,8 @@ std::string benchUsage() {
     std::string text =
         "usage: caustics-bench <mode> [options]\n"
         "  --width W --height H        image size (default 1920x1080, at most 16384)\n"
-        "  --frames N --warmup N       timed frames (median reported) and warm-up frames\n"
+        "  --frames N --warmup N       timed frames (median reported) and warm-up frames (default 2; with\n"
+        "                              the filter on, its history cap + frames in flight + 8)\n"
         "  --backend vulkan|d3d12      --validation: Vulkan validation layers on\n"
         "  --triangles T               rays mode: mesh size (12 .. 67108864)\n"
         "  --scene LIST                comma list of built-in scenes (default builtin,builtin:atrium)\n"

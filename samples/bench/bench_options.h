@@ -15,6 +15,7 @@ struct BenchOptions {
     uint32_t height = 1080;
     uint32_t frames = 30;           // timed frames per measurement (the median is reported)
     uint32_t warmupFrames = 2;
+    bool warmupGiven = false;       // --warmup given: else a filtered measurement warms up longer (bench_measure.h)
     uint32_t triangles = 1000000;   // rays mode
     rhi::Backend backend = rhi::Backend::Vulkan;
     bool validation = false;

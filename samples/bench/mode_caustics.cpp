@@ -59,7 +59,7 @@ int runMeasuredMode(const BenchOptions& o, bool everyPass) {
     if (Status ok = settings.validate(); !ok) return fail(mode, ok.message());
     std::printf("caustics-bench %s on %s (%s), median of %u frames after %u warm-up\n", mode,
                 device.value()->capabilities().adapterName.c_str(), device.value()->capabilities().driverName.c_str(),
-                o.frames, o.warmupFrames);
+                o.frames, warmupFrames(o, settings));
     std::stringstream scenes(o.scenes);
     for (std::string name; std::getline(scenes, name, ',');) {
         auto sc = loadBenchScene(name, o.extraLights);
