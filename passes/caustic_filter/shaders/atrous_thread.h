@@ -20,6 +20,14 @@
 #include "common/octahedral.h"
 #include "common/resources.h"
 
+// The 5x5 tap loops unrolled: each tap's kernel weight and offset become constants (the GLSL entries
+// enable GL_EXT_control_flow_attributes).
+#if defined(CAUSTICS_LANG_HLSL)
+#define ATROUS_UNROLL [unroll]
+#else
+#define ATROUS_UNROLL [[unroll]]
+#endif
+
 // A pixel's guide (filterPackAtrousGuide, caustics.temporal): normal, linear depth, id, depth slope.
 struct AtrousGuide {
     float3 normal;
@@ -42,7 +50,7 @@ AtrousGuide atrousGuide(int2 t) {
 // The pool texel of screen pixel p, or (-1, -1) where p is outside the view or its tile has no pool tile.
 int2 atrousPoolTexel(int2 p) {
     if (!filterInside(p, params.width, params.height)) return int2(-1, -1);
-    uint slot = CAUSTICS_TEXEL_UINT(slotMap, p / kFilterTileSize);
+    uint slot = CAUSTICS_TEXEL_UINT(slotMap, filterTileOfPixel(p));
     return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, p);
 }
 
@@ -79,8 +87,8 @@ void atrousThread(uint group, uint local) {
     }
     float lq = filterLuminance(centreColor.rgb), vq = centreColor.a * centreColor.a;
     float total = 0.0f;
-    for (int dy = -2; dy <= 2; ++dy) {
-        for (int dx = -2; dx <= 2; ++dx) {
+    ATROUS_UNROLL for (int dy = -2; dy <= 2; ++dy) {
+        ATROUS_UNROLL for (int dx = -2; dx <= 2; ++dx) {
             int2 t = atrousPoolTexel(p + int2(dx, dy) * s);
             if (t.x < 0) continue;
             AtrousGuide r = atrousGuide(t);
@@ -100,8 +108,8 @@ void atrousThread(uint group, uint local) {
     float lp = filterLuminance(centreColor.rgb), vp = centreColor.a * centreColor.a;
     float3 sum = float3(0.0f, 0.0f, 0.0f);
     float variance = 0.0f;
-    for (int dy = -2; dy <= 2; ++dy) {
-        for (int dx = -2; dx <= 2; ++dx) {
+    ATROUS_UNROLL for (int dy = -2; dy <= 2; ++dy) {
+        ATROUS_UNROLL for (int dx = -2; dx <= 2; ++dx) {
             int2 t = atrousPoolTexel(p + int2(dx, dy) * s);
             if (t.x < 0) continue;
             float4 c = CAUSTICS_TEXEL(inColor, t);

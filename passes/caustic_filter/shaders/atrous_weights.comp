@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 // Vulkan entry of caustics.atrous.N.weights (W_q per pixel); the body is atrous.h (docs/shaders.md).
 #define kAtrousWeights 1
 #include "atrous.h"

@@ -11,17 +11,24 @@ CAUSTICS_SHARED_BEGIN
 // caustics.filterTiles.list, tiles.h), packed x | y << 16. Its per-pixel data lives in a pool of 8x8 tiles, kFilterPoolTilesPerRow to a row
 // (caustic_filter.h); the slot map names each screen tile's pool tile, kFilterNoSlot where none.
 CAUSTICS_CONST int kFilterTileSize = 8;
+CAUSTICS_CONST int kFilterTileShift = 3;        // log2 kFilterTileSize
 CAUSTICS_CONST uint kFilterGroupThreads = 64u;
 CAUSTICS_CONST uint kFilterNoSlot = 0xFFFFFFFFu;
 CAUSTICS_CONST uint kFilterPoolTilesPerRow = 128u;
+CAUSTICS_CONST uint kFilterPoolRowShift = 7u;   // log2 kFilterPoolTilesPerRow
 
 CAUSTICS_FN int2 filterTileOf(uint packed) { return int2(int(packed & 0xFFFFu), int(packed >> 16)); }
+// The screen tile of pixel p (p >= 0). Shifts and masks, not / and %: the a-trous passes find 50 taps'
+// pool texels per pixel and iteration, and signed division costs several instructions.
+CAUSTICS_FN int2 filterTileOfPixel(int2 p) { return int2(p.x >> kFilterTileShift, p.y >> kFilterTileShift); }
 // The pool texel of screen pixel p (p >= 0) whose tile has pool tile `slot`.
 CAUSTICS_FN int2 filterPoolTexel(uint slot, int2 p) {
-    int2 local = p - (p / kFilterTileSize) * kFilterTileSize;
-    return int2(int(slot % kFilterPoolTilesPerRow), int(slot / kFilterPoolTilesPerRow)) * kFilterTileSize + local;
+    int2 local = int2(p.x & (kFilterTileSize - 1), p.y & (kFilterTileSize - 1));
+    int2 tile = int2(int(slot & (kFilterPoolTilesPerRow - 1u)), int(slot >> kFilterPoolRowShift));
+    return int2(tile.x << kFilterTileShift, tile.y << kFilterTileShift) + local;
 }
-CAUSTICS_FN bool filterInside(int2 p, int width, int height) { return p.x >= 0 && p.y >= 0 && p.x < width && p.y < height; }
+// p inside a width x height view: a negative coordinate wraps to a large unsigned one.
+CAUSTICS_FN bool filterInside(int2 p, int width, int height) { return uint(p.x) < uint(width) && uint(p.y) < uint(height); }
 
 // The scalar whose moments and differences guide the filter (SVGF section 4.2): common/luminance.h.
 CAUSTICS_FN float filterLuminance(float3 c) { return rec709Luminance(c); }

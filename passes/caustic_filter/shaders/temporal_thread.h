@@ -53,7 +53,7 @@ uint4 filterPackAtrousGuide(float depth, float3 n, uint id, float2 gradZ) {
 
 // Last frame's pool texel of screen texel q, or (-1, -1) where its tile kept no history.
 int2 temporalHistoryTexel(int2 q) {
-    uint slot = CAUSTICS_TEXEL_UINT(previousSlots, q / kFilterTileSize);
+    uint slot = CAUSTICS_TEXEL_UINT(previousSlots, filterTileOfPixel(q));
     return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, q);
 }
 

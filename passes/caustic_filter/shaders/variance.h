@@ -42,7 +42,7 @@ CAUSTICS_SHARED_END
 
 // This frame's pool texel of screen pixel q, or (-1, -1) where its tile has none.
 int2 variancePoolTexel(int2 q) {
-    uint slot = CAUSTICS_TEXEL_UINT(slotMap, q / kFilterTileSize);
+    uint slot = CAUSTICS_TEXEL_UINT(slotMap, filterTileOfPixel(q));
     return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, q);
 }
 
