@@ -10,7 +10,9 @@
 //                       luminance deviation, the guides) and the a-trous guide, packed once per frame
 //   caustics.variance   luminance variance: temporal moments, or photon shot noise for short histories
 //   caustics.atrous.N   edge-aware a-trous iterations stopping at depth, normal, object and luminance,
-//                       energy-preserving: the weight sums (.weights), then the shares
+//                       energy-preserving: the symmetric pair weights and their sums (.pairs, into
+//                       the region of caustics.atrous.sums that caustics.atrous.clear zeroed), then
+//                       the shares
 //   caustics.filterOutput  (atrousIterations 0 only) the temporal result into caustics.radiance
 // The last pass writes into caustics.radiance, over the listed tiles (the others hold this frame's zeros).
 // With settings.filter off the combined radiance is returned unfiltered. The second type filtered apart
@@ -83,38 +85,45 @@ struct FilterFrame {
 };
 
 // Iteration i (step 2^i) on `radiance` (pool: rgb, a deviation), which it replaces with its result; the
-// last iteration writes into `output` (caustics.radiance) instead. Two passes: the weight sums W_q, then
-// the shares w / W_q (passes/caustic_filter/shaders/atrous.h; docs/caustics.md "Cost").
+// last iteration writes into `output` (caustics.radiance) instead. Two passes: each pixel's pair weights to
+// its 12 later neighbours, added to both pixels' weight sums in the iteration's region of `sums`
+// (addAtrousSumsClear), then the shares w / W_q (passes/caustic_filter/shaders/atrous.h; docs/caustics.md
+// "Cost").
 void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterFrame& ff, rg::RgTexture& radiance,
-                        rg::RgTexture& output, bool jitteredGuides) {
+                        rg::RgTexture& output, rg::RgBuffer& sums, bool jitteredGuides) {
     const CausticsSettings& s = f.in->settings;
     const bool last = i + 1 == s.atrousIterations;
     const std::string name = "caustics.atrous." + std::to_string(i), run = f.filterRun;
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
-                                    1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f};
-    rg::RgTexture sums;
-    graph.addPass(name + ".weights" + run, [&](rg::PassBuilder& b) {
+                                    1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f,
+                                    i * ff.poolTiles * shader::kFilterGroupThreads};
+    rg::RgTexture pairs;
+    graph.addPass(name + ".pairs" + run, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide);
         readTiles(b, ff.tiles, true);
-        sums = b.write(b.createTexture(name + ".weights", poolImageDesc(ff.poolTiles, rhi::Format::R32_FLOAT, "caustics.atrousWeights")));
+        pairs = b.write(b.createTexture(name + ".pairs", poolImageDesc(ff.poolTiles, rhi::Format::RGBA32_UINT, "caustics.atrousPairs")));
+        sums = b.write(sums, rg::Access::StorageReadWrite);
         CausticFrame fr = f;
-        rg::RgTexture o = sums;
+        rg::RgTexture o = pairs;
+        rg::RgBuffer w = sums;
         FilterTiles t = ff.tiles;
         return [=](rg::PassContext& ctx) {
-            dispatchDeclared(ctx, *fr.res, fr.res->filter.atrousWeights, fr.res->filter.atrousWeightsLayout,
-                             PassBindingSet(shader_bindings::kCausticAtrousWeightsBindings, 0)
+            dispatchDeclared(ctx, *fr.res, fr.res->filter.atrousPairs, fr.res->filter.atrousPairsLayout,
+                             PassBindingSet(shader_bindings::kCausticAtrousPairsBindings, 0)
                                  .texture("inColor", ctx.texture(in))
                                  .texture("guides", ctx.texture(guide))
                                  .texture("slotMap", ctx.texture(t.slots))
                                  .buffer("tiles", ctx.buffer(t.list))
-                                 .texture("outSums", ctx.texture(o)),
+                                 .texture("outPairs", ctx.texture(o))
+                                 .buffer("weightSums", ctx.buffer(w)),
                              push, t.args);
         };
     });
     graph.addPass(name + run, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
-        const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide), w = b.read(sums);
+        const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide), pw = b.read(pairs);
+        const rg::RgBuffer w = b.read(sums);
         readTiles(b, ff.tiles, true);
         if (last) radiance = output = b.write(output);
         else radiance = b.write(b.createTexture(name, poolImageDesc(ff.poolTiles, rhi::Format::RGBA16_FLOAT, "caustics.atrous")));
@@ -130,11 +139,28 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                                  .texture("guides", ctx.texture(guide))
                                  .texture("slotMap", ctx.texture(t.slots))
                                  .buffer("tiles", ctx.buffer(t.list))
-                                 .texture("sums", ctx.texture(w))
+                                 .buffer("weightSums", ctx.buffer(w))
+                                 .texture("pairs", ctx.texture(pw))
                                  .texture("outColor", ctx.texture(o)),
                              push, t.args);
         };
     });
+}
+
+// caustics.atrous.clear: the weight sums of every a-trous iteration, a pool's texels each, zeroed at once
+// (one transfer instead of one per iteration: docs/caustics.md "Cost").
+rg::RgBuffer addAtrousSumsClear(rg::RenderGraph& graph, CausticFrame& f, const FilterFrame& ff) {
+    rg::RgBuffer sums;
+    graph.addPass(std::string("caustics.atrous.clear") + f.filterRun, [&](rg::PassBuilder& b) {
+        const uint64_t bytes = uint64_t(f.in->settings.atrousIterations) * ff.poolTiles * shader::kFilterGroupThreads * 4;
+        sums = b.write(b.createBuffer("caustics.atrous.sums", rhi::BufferDesc().setByteSize(bytes)
+                                                                  .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::CopyDest)
+                                                                  .setDebugName("caustics.atrousSums")),
+                       rg::Access::CopyDest);
+        rg::RgBuffer o = sums;
+        return [=](rg::PassContext& ctx) { ctx.cmd().fillBuffer(ctx.buffer(o), 0u); };
+    });
+    return sums;
 }
 
 // caustics.temporal: last frame's history reprojected into this frame's (ping-pong, no copy).
@@ -283,7 +309,10 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         };
     });
 
-    for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, ff, radiance, raw, motionGuides);
+    if (s.atrousIterations > 0) {
+        rg::RgBuffer sums = addAtrousSumsClear(graph, f, ff);
+        for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, ff, radiance, raw, sums, motionGuides);
+    }
     return ff.tiles.args;
 }
 

@@ -20,7 +20,7 @@
 
 namespace caustics {
 
-static_assert(sizeof(shader::AtrousParams) == 24);
+static_assert(sizeof(shader::AtrousParams) == 28);
 static_assert(shader::kFilterPoolTilesPerRow == kFilterPoolTilesPerRow);
 
 Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
@@ -36,7 +36,7 @@ Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
     CAUSTICS_TRY(p.tileListLayout, layout(shader_bindings::kCausticTileListBindings));
     CAUSTICS_TRY(p.temporalLayout, layout(shader_bindings::kCausticTemporalBindings));
     CAUSTICS_TRY(p.varianceLayout, layout(shader_bindings::kCausticVarianceBindings));
-    CAUSTICS_TRY(p.atrousWeightsLayout, layout(shader_bindings::kCausticAtrousWeightsBindings));
+    CAUSTICS_TRY(p.atrousPairsLayout, layout(shader_bindings::kCausticAtrousPairsBindings));
     CAUSTICS_TRY(p.atrousLayout, layout(shader_bindings::kCausticAtrousBindings));
     CAUSTICS_TRY(p.atrousLastLayout, layout(shader_bindings::kCausticAtrousLastBindings));
     CAUSTICS_TRY(p.outputLayout, layout(shader_bindings::kCausticFilterOutputBindings));
@@ -46,8 +46,8 @@ Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
     CAUSTICS_TRY(p.output, createPassComputePipeline(d, "caustic_filter/output.comp", {p.outputLayout}, sizeof(shader::FilterOutputParams)));
     CAUSTICS_TRY(p.temporal, createPassComputePipeline(d, "caustic_filter/temporal.comp", {p.temporalLayout}, sizeof(shader::TemporalParams)));
     CAUSTICS_TRY(p.variance, createPassComputePipeline(d, "caustic_filter/variance.comp", {p.varianceLayout}, sizeof(shader::VarianceParams)));
-    CAUSTICS_TRY(p.atrousWeights, createPassComputePipeline(d, "caustic_filter/atrous_weights.comp", {p.atrousWeightsLayout},
-                                                      sizeof(shader::AtrousParams)));
+    CAUSTICS_TRY(p.atrousPairs, createPassComputePipeline(d, "caustic_filter/atrous_pairs.comp", {p.atrousPairsLayout},
+                                                        sizeof(shader::AtrousParams)));
     CAUSTICS_TRY(p.atrous, createPassComputePipeline(d, "caustic_filter/atrous.comp", {p.atrousLayout}, sizeof(shader::AtrousParams)));
     CAUSTICS_TRY(p.atrousLast,
                  createPassComputePipeline(d, "caustic_filter/atrous_last.comp", {p.atrousLastLayout}, sizeof(shader::AtrousParams)));

@@ -1,17 +1,22 @@
 #ifndef CAUSTICS_PASS_CAUSTIC_ATROUS_THREAD_H
 #define CAUSTICS_PASS_CAUSTIC_ATROUS_THREAD_H
-// The thread function of caustics.atrous.N.weights (kAtrousWeights) and caustics.atrous.N (GLSL and
-// HLSL; the pure functions are atrous.h). One 8x8 group per listed tile (the group index is the tile's
-// pool tile); each tap is fetched through this frame's slot map (a group-shared region of the tile and
-// its apron measured 3-4x slower on the H200: docs/caustics.md "Cost"):
-//   weights  W_q of the group's pixels, the sum of their weights to the 5x5 receivers that hold data;
-//            a source without light writes 1 (it hands out nothing, whatever divides it);
-//   shares   each pixel receives w(q -> p) / W_q of its 5x5 sources, the dark ones skipped after one
-//            colour fetch (or, kAtrousLast, writes caustics.radiance).
+// The thread function of caustics.atrous.N.pairs (kAtrousPairs), .weights (kAtrousWeights) and
+// caustics.atrous.N (GLSL and HLSL; the pure functions are atrous.h). One 8x8 group per listed tile (the
+// group index is the tile's pool tile); each tap is fetched through this frame's slot map (a group-shared
+// region of the tile's colours and guides and its apron measured 3-4x slower on the H200: docs/caustics.md
+// "Cost"); the pool tiles of the group's tile and its 8 neighbours, which hold every tap of a step up to
+// the tile size, are read from the slot map once per group into group-shared memory:
+//   pairs    w(p, p + s tap_k) for the 12 later neighbours tap_k of each pixel (atrousPairTap), packed;
+//            0 where the neighbour holds no data, has another object or both are dark (no source); each
+//            pair's weight is added to both pixels' W in fixed point (buffer atomics on this iteration's
+//            region of the cleared caustics.atrous.sums, one word per pool texel), with the centre tap to
+//            the pixel's own;
+//   shares   each pixel receives w(p, q) / W_q of its 5x5 sources, skipping zero pairs before any fetch
+//            and dark sources after one colour fetch (or, kAtrousLast, writes caustics.radiance).
 // A pixel outside the view or in a tile without a pool tile holds nothing: it is neither a source nor a
 // receiver (docs/caustics.md "Tiles": the energy stays in the listed tiles).
-#if defined(kAtrousWeights)
-#include "bindings/caustic_atrous_weights.h"   // generated from passes/caustic_filter/atrous_bindings.h
+#if defined(kAtrousPairs)
+#include "bindings/caustic_atrous_pairs.h"   // generated from passes/caustic_filter/atrous_bindings.h
 #elif defined(kAtrousLast)
 #include "bindings/caustic_atrous_last.h"
 #else
@@ -47,17 +52,81 @@ AtrousGuide atrousGuide(int2 t) {
     return a;
 }
 
-// The pool texel of screen pixel p, or (-1, -1) where p is outside the view or its tile has no pool tile.
-int2 atrousPoolTexel(int2 p) {
-    if (!filterInside(p, params.width, params.height)) return int2(-1, -1);
-    uint slot = CAUSTICS_TEXEL_UINT(slotMap, filterTileOfPixel(p));
-    return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, p);
+// The pool tiles that hold the group's taps (kFilterNoSlot outside the view or where a tile has none),
+// read once per group (atrousLoadSlots) instead of once per tap. A step up to kFilterTileSize / 2 keeps
+// every tap in the group's tile and its 8 neighbours: sSlots[0..8] holds them row by row from the one
+// above left. From kFilterTileSize on (the fourth iteration and later), tap (dx, dy) of every pixel of
+// the group lies in the tile (dx, dy) x step / kFilterTileSize away: sSlots holds the 25, by tap.
+FILTER_GROUPSHARED uint sSlots[25];
+
+bool atrousSlotsByTap() { return params.stepWidth >= kFilterTileSize; }
+
+// Fills sSlots and returns the group's screen tile. Every thread of the group calls it (a barrier).
+int2 atrousLoadSlots(uint group, uint local) {
+    int2 tile = filterTileOf(tilesLoad(group));
+    int2 t = atrousSlotsByTap() ? tile + int2(int(local % 5u) - 2, int(local / 5u) - 2) * (params.stepWidth >> kFilterTileShift)
+                                : tile + int2(int(local % 3u) - 1, int(local / 3u) - 1);
+    if (local < (atrousSlotsByTap() ? 25u : 9u)) {
+        int2 tiles = int2((params.width + kFilterTileSize - 1) >> kFilterTileShift, (params.height + kFilterTileSize - 1) >> kFilterTileShift);
+        sSlots[local] = filterInside(t, tiles.x, tiles.y) ? CAUSTICS_TEXEL_UINT(slotMap, t) : kFilterNoSlot;
+    }
+    FILTER_BARRIER();
+    return tile;
+}
+
+// The pool tile of screen pixel q = p + step tap, p a pixel of the group's tile `tile` (sSlots), or
+// kFilterNoSlot where q is outside the view or its tile has no pool tile.
+uint atrousSlot(int2 q, int2 tile, int2 tap) {
+    if (!filterInside(q, params.width, params.height)) return kFilterNoSlot;
+    if (atrousSlotsByTap()) return sSlots[(tap.y + 2) * 5 + tap.x + 2];
+    int2 near = filterTileOfPixel(q) - tile + int2(1, 1);
+    return sSlots[near.y * 3 + near.x];
+}
+
+// Pixel p's word in this iteration's region of caustics.atrous.sums: its pool tile's 64, row by row.
+uint atrousSumIndex(uint slot, int2 p) {
+    return params.sumsBase + slot * kFilterGroupThreads +
+           uint((p.y & (kFilterTileSize - 1)) * kFilterTileSize + (p.x & (kFilterTileSize - 1)));
 }
 
 bool atrousIsDark(float4 c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f && c.w == 0.0f; }
 
-#if defined(kAtrousWeights)
-void atrousStore(int2 p, int2 own, float value) { CAUSTICS_IMAGE_STORE(outSums, own, float4(value, value, value, value)); }
+#if defined(kAtrousPairs)
+void atrousThread(uint group, uint local) {
+    int s = params.stepWidth;
+    int2 tile = atrousLoadSlots(group, local);
+    int2 p = tile * kFilterTileSize + int2(int(local % 8u), int(local / 8u));
+    if (!filterInside(p, params.width, params.height)) return;
+    int2 own = filterPoolTexel(group, p);   // list index = pool tile (tile_list_thread.h)
+    float4 centreColor = CAUSTICS_TEXEL(inColor, own);
+    AtrousGuide centre = atrousGuide(own);
+    uint4 pairs = uint4(0u, 0u, 0u, 0u);
+    uint sum = atrousFixedWeight(kAtrousSelfWeight);
+    if (centre.id != 0u) {
+        bool centreDark = atrousIsDark(centreColor);
+        float lp = filterLuminance(centreColor.rgb), vp = centreColor.a * centreColor.a;
+        ATROUS_UNROLL for (int k = 0; k < kAtrousPairCount; ++k) {
+            int2 tap = atrousPairTap(k), q = p + tap * s;
+            uint slot = atrousSlot(q, tile, tap);
+            if (slot == kFilterNoSlot) continue;
+            int2 t = filterPoolTexel(slot, q);
+            float4 c = CAUSTICS_TEXEL(inColor, t);
+            if (centreDark && atrousIsDark(c)) continue;   // neither hands anything to the other
+            AtrousGuide g = atrousGuide(t);
+            if (g.id != centre.id) continue;
+            uint code = atrousPackWeight(atrousPairWeight(tap, s, centre.depth, g.depth, centre.gradient, g.gradient, centre.normal,
+                                                          g.normal, lp, filterLuminance(c.rgb), vp, c.a * c.a,
+                                                          params.sigmaLuminance, params.depthJitter));
+            if (code == 0u) continue;
+            pairs[k / 3] |= code << (10 * (k % 3));
+            uint fixedWeight = atrousFixedWeight(atrousUnpackWeight(code));
+            sum += fixedWeight;
+            weightSumsAtomicAdd(atrousSumIndex(slot, q), fixedWeight);
+        }
+    }
+    CAUSTICS_IMAGE_STORE(outPairs, own, pairs);
+    weightSumsAtomicAdd(atrousSumIndex(group, p), sum);
+}
 #else
 void atrousStore(int2 p, int2 own, float3 rgb, float deviation) {
 #if defined(kAtrousLast)
@@ -66,66 +135,46 @@ void atrousStore(int2 p, int2 own, float3 rgb, float deviation) {
     CAUSTICS_IMAGE_STORE(outColor, own, filterNearestHalf4(float4(rgb, deviation)));
 #endif
 }
-#endif
+
+// Source q's share w / W_q of its colour, added to a receiver's sum (rgb) and variance; a dark source
+// gives nothing.
+void atrousAddShare(uint slot, int2 q, float w, CAUSTICS_INOUT(float3) sum, CAUSTICS_INOUT(float) variance) {
+    float4 c = CAUSTICS_TEXEL(inColor, filterPoolTexel(slot, q));
+    if (atrousIsDark(c)) return;
+    float share = w * kAtrousFixedScale / float(weightSumsLoad(atrousSumIndex(slot, q)));
+    sum += share * c.rgb;
+    variance += share * share * (c.a * c.a);
+}
 
 void atrousThread(uint group, uint local) {
     int s = params.stepWidth;
-    int2 p = filterTileOf(tilesLoad(group)) * kFilterTileSize + int2(int(local % 8u), int(local / 8u));
+    int2 tile = atrousLoadSlots(group, local);
+    int2 p = tile * kFilterTileSize + int2(int(local % 8u), int(local / 8u));
     if (!filterInside(p, params.width, params.height)) return;
-    int2 own = filterPoolTexel(group, p);   // list index = pool tile (tile_list_thread.h)
-    float4 centreColor = CAUSTICS_TEXEL(inColor, own);
-#if defined(kAtrousWeights)
-    // p is the source q here. A source without light hands out nothing: its W_q divides zero.
-    if (atrousIsDark(centreColor)) {
-        atrousStore(p, own, 1.0f);
+    int2 own = filterPoolTexel(group, p);
+    if (atrousGuide(own).id == 0u) {
+        float4 c = CAUSTICS_TEXEL(inColor, own);
+        atrousStore(p, own, c.rgb, c.a);
         return;
     }
-    AtrousGuide centre = atrousGuide(own);
-    if (centre.id == 0u) {
-        atrousStore(p, own, 1.0f);
-        return;
-    }
-    float lq = filterLuminance(centreColor.rgb), vq = centreColor.a * centreColor.a;
-    float total = 0.0f;
-    ATROUS_UNROLL for (int dy = -2; dy <= 2; ++dy) {
-        ATROUS_UNROLL for (int dx = -2; dx <= 2; ++dx) {
-            int2 t = atrousPoolTexel(p + int2(dx, dy) * s);
-            if (t.x < 0) continue;
-            AtrousGuide r = atrousGuide(t);
-            if (r.id != centre.id) continue;
-            float4 c = CAUSTICS_TEXEL(inColor, t);
-            total += atrousSpreadWeight(int2(dx, dy), s, centre.depth, r.depth, centre.gradient, centre.normal, r.normal, lq,
-                                        filterLuminance(c.rgb), vq, c.a * c.a, params.sigmaLuminance, params.depthJitter);
-        }
-    }
-    atrousStore(p, own, total);   // >= the centre's own weight 9/64 > 0
-#else
-    AtrousGuide centre = atrousGuide(own);
-    if (centre.id == 0u) {
-        atrousStore(p, own, centreColor.rgb, centreColor.a);
-        return;
-    }
-    float lp = filterLuminance(centreColor.rgb), vp = centreColor.a * centreColor.a;
     float3 sum = float3(0.0f, 0.0f, 0.0f);
     float variance = 0.0f;
-    ATROUS_UNROLL for (int dy = -2; dy <= 2; ++dy) {
-        ATROUS_UNROLL for (int dx = -2; dx <= 2; ++dx) {
-            int2 t = atrousPoolTexel(p + int2(dx, dy) * s);
-            if (t.x < 0) continue;
-            float4 c = CAUSTICS_TEXEL(inColor, t);
-            if (atrousIsDark(c)) continue;   // a dark source gives nothing: no guide, no weight
-            AtrousGuide q = atrousGuide(t);
-            if (q.id != centre.id) continue;
-            float vq = c.a * c.a;
-            float share = atrousSpreadWeight(int2(-dx, -dy), s, q.depth, centre.depth, q.gradient, q.normal, centre.normal,
-                                             filterLuminance(c.rgb), lp, vq, vp, params.sigmaLuminance, params.depthJitter) /
-                          CAUSTICS_TEXEL(sums, t).x;
-            sum += share * c.rgb;
-            variance += share * share * vq;
-        }
+    atrousAddShare(group, p, kAtrousSelfWeight, sum, variance);
+    uint4 ownPairs = CAUSTICS_TEXEL(pairs, own);
+    ATROUS_UNROLL for (int k = 0; k < kAtrousPairCount; ++k) {
+        // The later neighbour: the pair is this pixel's own (non-zero only where the neighbour is in the pool).
+        int2 tap = atrousPairTap(k), q = p + tap * s;
+        uint code = atrousPairCode(ownPairs, k);
+        if (code != 0u) atrousAddShare(atrousSlot(q, tile, tap), q, atrousUnpackWeight(code), sum, variance);
+        // The earlier neighbour holds the pair at the same index.
+        q = p - tap * s;
+        uint slot = atrousSlot(q, tile, -tap);
+        if (slot == kFilterNoSlot) continue;
+        code = atrousPairCode(CAUSTICS_TEXEL(pairs, filterPoolTexel(slot, q)), k);
+        if (code != 0u) atrousAddShare(slot, q, atrousUnpackWeight(code), sum, variance);
     }
     atrousStore(p, own, sum, sqrt(variance));
-#endif
 }
+#endif
 
 #endif  // CAUSTICS_PASS_CAUSTIC_ATROUS_THREAD_H
