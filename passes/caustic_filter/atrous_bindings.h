@@ -20,7 +20,7 @@ inline constexpr Binding kCausticAtrousBindingList[] = {
     {"guides", Kind::SampledTexture, 0, 1, "uint4"},
     {"slotMap", Kind::SampledTexture, 0, 2, "uint"},
     {"tiles", Kind::StorageBufferRO, 0, 3, "uint"},
-    {"weightSums", Kind::StorageBufferRO, 0, 4, "uint"},   // caustics.atrous.N.pairs'
+    {"weightSums", Kind::StorageBufferRW, 0, 4, "uint"},   // reads this iteration's region, zeroes the next's
     {"pairs", Kind::SampledTexture, 0, 5, "uint4"},
     {"outColor", Kind::StorageTexture, 0, 6, "float4", ImageFormat::Rgba16f},   // pool
 };

@@ -11,8 +11,8 @@
 //   caustics.variance   luminance variance: temporal moments, or photon shot noise for short histories
 //   caustics.atrous.N   edge-aware a-trous iterations stopping at depth, normal, object and luminance,
 //                       energy-preserving: the symmetric pair weights and their sums (.pairs, into
-//                       the region of caustics.atrous.sums that caustics.atrous.clear zeroed), then
-//                       the shares
+//                       one of two alternating regions of caustics.atrous.sums, zeroed by
+//                       caustics.atrous.clear or the iteration before), then the shares
 //   caustics.filterOutput  (atrousIterations 0 only) the temporal result into caustics.radiance
 // The last pass writes into caustics.radiance, over the listed tiles (the others hold this frame's zeros).
 // With settings.filter off the combined radiance is returned unfiltered. The second type filtered apart
@@ -87,16 +87,17 @@ struct FilterFrame {
 // Iteration i (step 2^i) on `radiance` (pool: rgb, a deviation), which it replaces with its result; the
 // last iteration writes into `output` (caustics.radiance) instead. Two passes: each pixel's pair weights to
 // its 12 later neighbours, added to both pixels' weight sums in the iteration's region of `sums`
-// (addAtrousSumsClear), then the shares w / W_q (passes/caustic_filter/shaders/atrous.h; docs/caustics.md
+// (addAtrousSumsClear), then the shares w / W_q, which zero the next iteration's region (passes/caustic_filter/shaders/atrous.h; docs/caustics.md
 // "Cost").
 void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterFrame& ff, rg::RgTexture& radiance,
                         rg::RgTexture& output, rg::RgBuffer& sums, bool jitteredGuides) {
     const CausticsSettings& s = f.in->settings;
     const bool last = i + 1 == s.atrousIterations;
     const std::string name = "caustics.atrous." + std::to_string(i), run = f.filterRun;
+    const uint32_t region = ff.poolTiles * shader::kFilterGroupThreads;
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
-                                    1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f,
-                                    i * ff.poolTiles * shader::kFilterGroupThreads};
+                                    1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f, (i & 1u) * region,
+                                    last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region};
     rg::RgTexture pairs;
     graph.addPass(name + ".pairs" + run, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
@@ -123,7 +124,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     graph.addPass(name + run, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide), pw = b.read(pairs);
-        const rg::RgBuffer w = b.read(sums);
+        const rg::RgBuffer w = sums = last ? b.read(sums) : b.write(sums, rg::Access::StorageReadWrite);
         readTiles(b, ff.tiles, true);
         if (last) radiance = output = b.write(output);
         else radiance = b.write(b.createTexture(name, poolImageDesc(ff.poolTiles, rhi::Format::RGBA16_FLOAT, "caustics.atrous")));
@@ -147,18 +148,20 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     });
 }
 
-// caustics.atrous.clear: the weight sums of every a-trous iteration, a pool's texels each, zeroed at once
-// (one transfer instead of one per iteration: docs/caustics.md "Cost").
+// caustics.atrous.clear: the weight sums W of the a-trous iterations, two regions of a pool's texels that
+// the iterations alternate between; this zeroes the first iteration's, each shares pass the next one's
+// (one transfer in all: docs/caustics.md "Cost").
 rg::RgBuffer addAtrousSumsClear(rg::RenderGraph& graph, CausticFrame& f, const FilterFrame& ff) {
     rg::RgBuffer sums;
     graph.addPass(std::string("caustics.atrous.clear") + f.filterRun, [&](rg::PassBuilder& b) {
-        const uint64_t bytes = uint64_t(f.in->settings.atrousIterations) * ff.poolTiles * shader::kFilterGroupThreads * 4;
+        const uint64_t regionBytes = uint64_t(ff.poolTiles) * shader::kFilterGroupThreads * 4;
+        const uint64_t bytes = (f.in->settings.atrousIterations > 1 ? 2 : 1) * regionBytes;
         sums = b.write(b.createBuffer("caustics.atrous.sums", rhi::BufferDesc().setByteSize(bytes)
                                                                   .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::CopyDest)
                                                                   .setDebugName("caustics.atrousSums")),
                        rg::Access::CopyDest);
         rg::RgBuffer o = sums;
-        return [=](rg::PassContext& ctx) { ctx.cmd().fillBuffer(ctx.buffer(o), 0u); };
+        return [=](rg::PassContext& ctx) { ctx.cmd().fillBuffer(ctx.buffer(o), 0u, 0, regionBytes); };
     });
     return sums;
 }

@@ -15,7 +15,7 @@
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (atrous_bindings.h), 28 bytes.
+// Push constants (atrous_bindings.h), 32 bytes.
 struct AtrousParams {
     int stepWidth;
     int width;
@@ -27,10 +27,14 @@ struct AtrousParams {
     // by up to a pixel of depth slope), through glass that bends the receiver's depth away from a plane
     // over the larger steps (2 % of the depth per step; docs/caustics.md "Second-type guides").
     float depthJitter;
-    // This iteration's first word in caustics.atrous.sums (one region of a pool's texels per iteration,
-    // all cleared by one caustics.atrous.clear).
+    // The weight sums W alternate between two regions of caustics.atrous.sums, a pool's texels each:
+    // this iteration's first word, and the next iteration's, which this iteration's shares pass zeroes
+    // (kAtrousNoNextSums after the last; caustics.atrous.clear zeroes the first iteration's region).
     uint sumsBase;
+    uint nextSumsBase;
 };
+
+CAUSTICS_CONST uint kAtrousNoNextSums = 0xFFFFFFFFu;
 
 // B3-spline a-trous kernel taps for |offset| / step = 0, 1, 2 (1/16 (1 4 6 4 1)).
 CAUSTICS_FN float atrousKernelTap(int k) { return k == 0 ? 0.375f : (k == 1 ? 0.25f : 0.0625f); }

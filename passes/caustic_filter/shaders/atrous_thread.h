@@ -9,10 +9,11 @@
 //   pairs    w(p, p + s tap_k) for the 12 later neighbours tap_k of each pixel (atrousPairTap), packed;
 //            0 where the neighbour holds no data, has another object or both are dark (no source); each
 //            pair's weight is added to both pixels' W in fixed point (buffer atomics on this iteration's
-//            region of the cleared caustics.atrous.sums, one word per pool texel), with the centre tap to
-//            the pixel's own;
+//            region of caustics.atrous.sums, one word per pool texel, zeroed before), with the centre tap
+//            to the pixel's own;
 //   shares   each pixel receives w(p, q) / W_q of its 5x5 sources, skipping zero pairs before any fetch
-//            and dark sources after one colour fetch (or, kAtrousLast, writes caustics.radiance).
+//            and dark sources after one colour fetch, and zeroes its word of the next iteration's sums
+//            (or, kAtrousLast, writes caustics.radiance).
 // A pixel outside the view or in a tile without a pool tile holds nothing: it is neither a source nor a
 // receiver (docs/caustics.md "Tiles": the energy stays in the listed tiles).
 #if defined(kAtrousPairs)
@@ -83,11 +84,12 @@ uint atrousSlot(int2 q, int2 tile, int2 tap) {
     return sSlots[near.y * 3 + near.x];
 }
 
-// Pixel p's word in this iteration's region of caustics.atrous.sums: its pool tile's 64, row by row.
-uint atrousSumIndex(uint slot, int2 p) {
-    return params.sumsBase + slot * kFilterGroupThreads +
-           uint((p.y & (kFilterTileSize - 1)) * kFilterTileSize + (p.x & (kFilterTileSize - 1)));
+// Pixel p's word in a region of caustics.atrous.sums starting at `base`: its pool tile's 64, row by row.
+uint atrousSumIndexIn(uint base, uint slot, int2 p) {
+    return base + slot * kFilterGroupThreads + uint((p.y & (kFilterTileSize - 1)) * kFilterTileSize + (p.x & (kFilterTileSize - 1)));
 }
+// ... in this iteration's region.
+uint atrousSumIndex(uint slot, int2 p) { return atrousSumIndexIn(params.sumsBase, slot, p); }
 
 bool atrousIsDark(float4 c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f && c.w == 0.0f; }
 
@@ -152,11 +154,13 @@ void atrousThread(uint group, uint local) {
     int2 p = tile * kFilterTileSize + int2(int(local % 8u), int(local / 8u));
     if (!filterInside(p, params.width, params.height)) return;
     int2 own = filterPoolTexel(group, p);
-    if (atrousGuide(own).id == 0u) {
-        float4 c = CAUSTICS_TEXEL(inColor, own);
-        atrousStore(p, own, c.rgb, c.a);
-        return;
-    }
+#if !defined(kAtrousLast)
+    // The next iteration's pairs pass adds into that word; every texel this pass reads W from is a listed
+    // pixel in the view, so every one of those is zeroed here (iteration i - 1 read it last pass).
+    weightSumsStore(atrousSumIndexIn(params.nextSumsBase, group, p), 0u);
+#endif
+    // A pixel without a surface (id 0) has no pair and no pair names it, so its W is the centre tap's and
+    // it keeps its colour through the same sum: no guide fetch here.
     float3 sum = float3(0.0f, 0.0f, 0.0f);
     float variance = 0.0f;
     atrousAddShare(group, p, kAtrousSelfWeight, sum, variance);
