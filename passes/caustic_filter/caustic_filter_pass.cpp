@@ -93,13 +93,13 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                         rg::RgTexture& output, rg::RgBuffer& sums, bool jitteredGuides) {
     const CausticsSettings& s = f.in->settings;
     const bool last = i + 1 == s.atrousIterations;
-    const std::string name = "caustics.atrous." + std::to_string(i), run = f.filterRun;
+    const std::string name = "caustics.atrous." + std::to_string(i);
     const uint32_t region = ff.poolTiles * shader::kFilterGroupThreads;
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
                                     1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f, (i & 1u) * region,
                                     last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region};
     rg::RgTexture pairs;
-    graph.addPass(name + ".pairs" + run, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, name + ".pairs"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide);
         readTiles(b, ff.tiles, true);
@@ -121,7 +121,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                              push, t.args);
         };
     });
-    graph.addPass(name + run, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, name), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide), pw = b.read(pairs);
         const rg::RgBuffer w = sums = last ? b.read(sums) : b.write(sums, rg::Access::StorageReadWrite);
@@ -153,7 +153,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
 // (one transfer in all: docs/caustics.md "Cost").
 rg::RgBuffer addAtrousSumsClear(rg::RenderGraph& graph, CausticFrame& f, const FilterFrame& ff) {
     rg::RgBuffer sums;
-    graph.addPass(std::string("caustics.atrous.clear") + f.filterRun, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, "caustics.atrous.clear"), [&](rg::PassBuilder& b) {
         const uint64_t regionBytes = uint64_t(ff.poolTiles) * shader::kFilterGroupThreads * 4;
         const uint64_t bytes = (f.in->settings.atrousIterations > 1 ? 2 : 1) * regionBytes;
         sums = b.write(b.createBuffer("caustics.atrous.sums", rhi::BufferDesc().setByteSize(bytes)
@@ -172,7 +172,7 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
                      bool historyUsable, uint32_t readCopy, bool motionGuides) {
     const GBuffer& g = f.in->gbuffer;
     const uint32_t next = readCopy ^ 1u, frameIndex = f.in->frameIndex;
-    graph.addPass(std::string("caustics.temporal") + f.filterRun, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, "caustics.temporal"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.normalRoughness), b.read(g.objectId),
@@ -264,7 +264,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     const rg::RgTexture color = hist.color, guides = hist.guides;
 
     if (s.atrousIterations == 0) {
-        graph.addPass(std::string("caustics.filterOutput") + f.filterRun, [&](rg::PassBuilder& b) {
+        graph.addPass(filterPassName(f, "caustics.filterOutput"), [&](rg::PassBuilder& b) {
             b.setStages(rhi::PipelineStages::Compute);
             const rg::RgTexture in[] = {b.read(color), b.read(guides)};
             readTiles(b, ff.tiles, false);
@@ -286,7 +286,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         return ff.tiles.args;
     }
     rg::RgTexture radiance;
-    graph.addPass(std::string("caustics.variance") + f.filterRun, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, "caustics.variance"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in[] = {b.read(raw), b.read(color), b.read(guides), b.read(g.objectId), b.read(g.normalRoughness)};
         readTiles(b, ff.tiles, true);

@@ -1,6 +1,8 @@
 #pragma once
 // Graph helpers shared by the caustic filter's passes (caustic_filter_pass.cpp, filter_tile_passes.cpp;
 // docs/caustics.md "Filter", "Tiles", "Memory").
+#include <string>
+#include <string_view>
 #include <utility>
 
 #include "caustic_filter/caustic_filter.h"
@@ -9,6 +11,10 @@
 #include "module/pass_bindings.h"
 
 namespace caustics::filter {
+
+// A filter pass's name in this run of the filter: `name`, then ".secondType" for the second type's own run
+// (CausticFrame::filterRun), so that the bench times the two runs apart.
+inline std::string filterPassName(const CausticFrame& f, std::string_view name) { return std::string(name) + f.filterRun; }
 
 // A full-screen RGBA32F image (caustics.radiance and the separate types).
 inline rhi::TextureDesc screenImageDesc(uint32_t w, uint32_t h, const char* name) {

@@ -92,7 +92,6 @@ Status ensureFilterHistory(CausticResources::Impl& res, CausticViewHistory& h, u
             h.guides[i] = std::move(guides[i]);
         }
         h.poolTiles = pool;
-        h.freshPool = true;
         return okStatus();
     }
     const uint32_t tilesX = (width + 7) / 8, tilesY = (height + 7) / 8;
@@ -105,7 +104,6 @@ Status ensureFilterHistory(CausticResources::Impl& res, CausticViewHistory& h, u
     }
     h.poolTiles = pool;
     h.growth.reset();
-    h.freshPool = false;
     h.parity = h.builtParity = 0;
     h.width = width;
     h.height = height;

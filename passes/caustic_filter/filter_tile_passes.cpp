@@ -20,7 +20,7 @@ HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& h
     const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
     const rhi::ResourceState now = history.builtValid ? ro : rhi::ResourceState::Undefined;
     // A grown pool's new textures hold nothing yet (the growth pass fills the copy this frame reads).
-    const rhi::ResourceState pool = history.freshPool ? rhi::ResourceState::Undefined : now;
+    const rhi::ResourceState pool = history.growth ? rhi::ResourceState::Undefined : now;
     auto import = [&](const char* name, const rhi::TextureHandle (&t)[2], uint32_t i, rhi::ResourceState state) {
         return graph.importTexture(std::string(name) + std::to_string(i), t[i], state, ro);
     };
@@ -37,7 +37,6 @@ HistoryHandles importHistory(rg::RenderGraph& graph, const CausticViewHistory& h
 
 void addPoolGrowthPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, uint32_t readCopy, bool historyUsable) {
     CausticViewHistory& h = *f.history;
-    h.freshPool = false;
     if (!h.growth) return;
     CausticViewHistory::PoolGrowth growth = std::move(*h.growth);
     h.growth.reset();
@@ -50,7 +49,7 @@ void addPoolGrowthPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& 
     const rhi::ResourceState ro = rhi::ResourceState::ShaderResource;
     const rg::RgTexture oldColor = graph.importTexture("caustics.historyColorBeforeGrowth", growth.color[readCopy], ro, ro);
     const rg::RgTexture oldGuides = graph.importTexture("caustics.historyGuidesBeforeGrowth", growth.guides[readCopy], ro, ro);
-    graph.addPass(std::string("caustics.filterHistoryGrow") + f.filterRun, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, "caustics.filterHistoryGrow"), [&](rg::PassBuilder& b) {
         const rg::RgTexture from[] = {b.read(oldColor, rg::Access::CopySource), b.read(oldGuides, rg::Access::CopySource)};
         hist.previousColor = b.write(hist.previousColor, rg::Access::CopyDest);
         hist.previousGuides = b.write(hist.previousGuides, rg::Access::CopyDest);
@@ -70,7 +69,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
     const uint32_t w = f.width, h = f.height, tilesX = (w + 7) / 8, tilesY = (h + 7) / 8;
     const uint32_t capacity = f.history->poolTiles;
     FilterTiles t;
-    graph.addPass(std::string("caustics.filterTiles") + f.filterRun, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, "caustics.filterTiles"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const GBuffer& g = f.in->gbuffer;
@@ -93,7 +92,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
                 ctx.cmd().dispatch(tilesX, tilesY);   // one group per tile
         };
     });
-    graph.addPass(std::string("caustics.filterTiles.clear") + f.filterRun, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, "caustics.filterTiles.clear"), [&](rg::PassBuilder& b) {
         t.args = b.write(b.createBuffer("caustics.filterTileArgs",
                                         rhi::BufferDesc().setByteSize(16)
                                             .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::Indirect |
@@ -107,7 +106,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
             ctx.cmd().fillBuffer(ctx.buffer(args), 0u, 12, 4);
         };
     });
-    graph.addPass(std::string("caustics.filterTiles.list") + f.filterRun, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, "caustics.filterTiles.list"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         hist.tiles = b.write(hist.tiles, rg::Access::StorageReadWrite);
         hist.slots = b.write(hist.slots);
@@ -131,7 +130,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
             else dispatchImage(ctx, *fr.res, fr.res->filter.tileList, fr.res->filter.tileListLayout, std::move(*d), push, tilesX, tilesY);
         };
     });
-    graph.addPass(std::string("caustics.filterTiles.count") + f.filterRun, [&](rg::PassBuilder& b) {
+    graph.addPass(filterPassName(f, "caustics.filterTiles.count"), [&](rg::PassBuilder& b) {
         t.args = b.read(t.args, rg::Access::CopySource);
         b.setSideEffects();   // writes a host-visible buffer the graph does not track
         rg::RgBuffer args = t.args;

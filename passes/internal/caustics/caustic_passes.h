@@ -109,14 +109,13 @@ struct CausticViewHistory {
     uint32_t poolTiles = 0;         // the pool's capacity in tiles
     // A grown pool (docs/caustics.md "Memory"): the smaller pool's textures, whose copy the next graph
     // built reads it copies into the new ones first (caustics.filterHistoryGrow), so that growing keeps
-    // the history; `rows` of 8x8 tiles. `freshPool`: color and guides were just created, so the next
-    // graph built imports them with undefined contents.
+    // the history; `rows` of 8x8 tiles. While it is set, color and guides were just created, so the
+    // next graph built imports them with undefined contents.
     struct PoolGrowth {
         rhi::TextureHandle color[2], guides[2];
         uint32_t rows = 0;
     };
     std::optional<PoolGrowth> growth;
-    bool freshPool = false;
     float preExposure[2] = {1.0f, 1.0f};   // the pre-exposure each copy was stored with
     // Per frame slot: the tiles the frame listed (4 bytes, Readback memory) and whether it was recorded.
     std::vector<rhi::BufferHandle> tileCounts;
