@@ -1,11 +1,10 @@
 #ifndef CAUSTICS_PASS_CAUSTIC_ATROUS_THREAD_H
 #define CAUSTICS_PASS_CAUSTIC_ATROUS_THREAD_H
-// The thread function of caustics.atrous.N.pairs (kAtrousPairs), .weights (kAtrousWeights) and
-// caustics.atrous.N (GLSL and HLSL; the pure functions are atrous.h). One 8x8 group per listed tile (the
-// group index is the tile's pool tile); each tap is fetched through this frame's slot map (a group-shared
-// region of the tile's colours and guides and its apron measured 3-4x slower on the H200: docs/caustics.md
-// "Cost"); the pool tiles of the group's tile and its 8 neighbours, which hold every tap of a step up to
-// the tile size, are read from the slot map once per group into group-shared memory:
+// The thread function of caustics.atrous.N.pairs (kAtrousPairs) and caustics.atrous.N (GLSL and HLSL; the
+// pure functions are atrous.h). One 8x8 group per listed tile (the group index is the tile's pool tile);
+// each tap's colour and guide are fetched (a group-shared region of the tile's colours and guides and its
+// apron measured 3-4x slower on the H200: docs/caustics.md "Cost"), the taps' pool tiles read from the
+// slot map once per group into group-shared memory (sSlots):
 //   pairs    w(p, p + s tap_k) for the 12 later neighbours tap_k of each pixel (atrousPairTap), packed;
 //            0 where the neighbour holds no data, has another object or both are dark (no source); each
 //            pair's weight is added to both pixels' W in fixed point (buffer atomics on this iteration's

@@ -44,7 +44,7 @@ uint filterGuideId(uint objectId) { return objectId & 0xFFFFu; }
 
 // The a-trous passes' guide of a pool texel, packed once per frame (docs/caustics.md "Cost"): x the
 // linear depth (32-bit float bits), y the normal as octahedral 2 x unorm16 (below 1e-4 rad), z the
-// object id, w the depth slope (2 x half). Unpacked by atrous_thread.h (atrousLoad).
+// object id, w the depth slope (2 x half). Unpacked by atrous_thread.h (atrousGuide).
 uint4 filterPackAtrousGuide(float depth, float3 n, uint id, float2 gradZ) {
     float2 e = dot(abs(n), float3(1.0f, 1.0f, 1.0f)) > 0.0f ? octEncode(n) : float2(0.0f, 0.0f);
     uint2 q = uint2(round(clamp(e * 0.5f + 0.5f, 0.0f, 1.0f) * 65535.0f));
