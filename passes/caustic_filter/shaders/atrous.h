@@ -5,13 +5,13 @@
 // every source q hands each receiver p of its 5x5 holed neighbourhood the share w(p, q) / W_q of its
 // radiance, W_q = sum_p w(p, q), so a source's shares add up to 1 (docs/caustics.md "Filter",
 // "Spatial"). The weight is symmetric, so each pair's is evaluated once per iteration, by the pixel of
-// the pair that comes first in scan order. Three passes per iteration over the tile list
-// (docs/caustics.md "Cost"):
-//   caustics.atrous.N.pairs     w to the 12 later neighbours of every pixel, packed (atrous_pairs.comp / .hlsl)
-//   caustics.atrous.N.weights   W_q of every pixel: its own 12 and its 12 earlier neighbours' (atrous_weights.*)
+// the pair that comes first in scan order. Two passes per iteration over the tile list, after one
+// caustics.atrous.clear for all (docs/caustics.md "Cost"):
+//   caustics.atrous.N.pairs     w to the 12 later neighbours of every pixel, packed, and added to both
+//                               pixels' W_q (atrous_pairs.comp / .hlsl)
 //   caustics.atrous.N           the shares (atrous.comp / .hlsl into the pool; atrous_last.comp / .hlsl,
 //                               kAtrousLast, into caustics.radiance in radiance units)
-// Each tap is fetched (docs/caustics.md "Cost" has what a shared-memory region measured).
+// Each tap's colour and guide are fetched (docs/caustics.md "Cost" has what a shared-memory region measured).
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
