@@ -15,23 +15,22 @@ inline constexpr Binding kCausticAtrousPairsBindingList[] = {
     {"outPairs", Kind::StorageTexture, 0, 4, "uint4", ImageFormat::Rgba32ui},   // pool: atrousPackWeight x 12
     {"weightSums", Kind::StorageBufferRW, 0, 5, "uint"},   // caustics.atrous.sums: W_q x 2^30 per pool texel (atrousSumIndex)
 };
+// The shares passes read no guide: the pairs hold every edge test (atrous_thread.h).
 inline constexpr Binding kCausticAtrousBindingList[] = {
     {"inColor", Kind::SampledTexture, 0, 0, "float4"},
-    {"guides", Kind::SampledTexture, 0, 1, "uint4"},
-    {"slotMap", Kind::SampledTexture, 0, 2, "uint"},
-    {"tiles", Kind::StorageBufferRO, 0, 3, "uint"},
-    {"weightSums", Kind::StorageBufferRW, 0, 4, "uint"},   // reads this iteration's region, zeroes the next's
-    {"pairs", Kind::SampledTexture, 0, 5, "uint4"},
-    {"outColor", Kind::StorageTexture, 0, 6, "float4", ImageFormat::Rgba16f},   // pool
+    {"slotMap", Kind::SampledTexture, 0, 1, "uint"},
+    {"tiles", Kind::StorageBufferRO, 0, 2, "uint"},
+    {"weightSums", Kind::StorageBufferRW, 0, 3, "uint"},   // reads this iteration's region, zeroes the next's
+    {"pairs", Kind::SampledTexture, 0, 4, "uint4"},
+    {"outColor", Kind::StorageTexture, 0, 5, "float4", ImageFormat::Rgba16f},   // pool
 };
 inline constexpr Binding kCausticAtrousLastBindingList[] = {
     {"inColor", Kind::SampledTexture, 0, 0, "float4"},
-    {"guides", Kind::SampledTexture, 0, 1, "uint4"},
-    {"slotMap", Kind::SampledTexture, 0, 2, "uint"},
-    {"tiles", Kind::StorageBufferRO, 0, 3, "uint"},
-    {"weightSums", Kind::StorageBufferRO, 0, 4, "uint"},
-    {"pairs", Kind::SampledTexture, 0, 5, "uint4"},
-    {"outColor", Kind::StorageTexture, 0, 6, "float4", ImageFormat::Rgba32f},   // screen: caustics.radiance
+    {"slotMap", Kind::SampledTexture, 0, 1, "uint"},
+    {"tiles", Kind::StorageBufferRO, 0, 2, "uint"},
+    {"weightSums", Kind::StorageBufferRO, 0, 3, "uint"},
+    {"pairs", Kind::SampledTexture, 0, 4, "uint4"},
+    {"outColor", Kind::StorageTexture, 0, 5, "float4", ImageFormat::Rgba32f},   // screen: caustics.radiance
 };
 
 inline constexpr PassBindings kCausticAtrousPairsBindings{"caustic_atrous_pairs", "passes/caustic_filter/atrous_bindings.h",

@@ -87,8 +87,8 @@ struct FilterFrame {
 // Iteration i (step 2^i) on `radiance` (pool: rgb, a deviation), which it replaces with its result; the
 // last iteration writes into `output` (caustics.radiance) instead. Two passes: each pixel's pair weights to
 // its 12 later neighbours, added to both pixels' weight sums in the iteration's region of `sums`
-// (addAtrousSumsClear), then the shares w / W_q, which zero the next iteration's region (passes/caustic_filter/shaders/atrous.h; docs/caustics.md
-// "Cost").
+// (addAtrousSumsClear), then the shares w / W_q, which zero the next iteration's region
+// (passes/caustic_filter/shaders/atrous.h; docs/caustics.md "Cost").
 void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterFrame& ff, rg::RgTexture& radiance,
                         rg::RgTexture& output, rg::RgBuffer& sums, bool jitteredGuides) {
     const CausticsSettings& s = f.in->settings;
@@ -123,7 +123,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     });
     graph.addPass(filterPassName(f, name), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
-        const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide), pw = b.read(pairs);
+        const rg::RgTexture in = b.read(radiance), pw = b.read(pairs);
         const rg::RgBuffer w = sums = last ? b.read(sums) : b.write(sums, rg::Access::StorageReadWrite);
         readTiles(b, ff.tiles, true);
         if (last) radiance = output = b.write(output);
@@ -137,7 +137,6 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                              last ? fr.res->filter.atrousLastLayout : fr.res->filter.atrousLayout,
                              PassBindingSet(declared, 0)
                                  .texture("inColor", ctx.texture(in))
-                                 .texture("guides", ctx.texture(guide))
                                  .texture("slotMap", ctx.texture(t.slots))
                                  .buffer("tiles", ctx.buffer(t.list))
                                  .buffer("weightSums", ctx.buffer(w))

@@ -33,25 +33,6 @@
 #define ATROUS_UNROLL [[unroll]]
 #endif
 
-// A pixel's guide (filterPackAtrousGuide, caustics.temporal): normal, linear depth, id, depth slope.
-struct AtrousGuide {
-    float3 normal;
-    float depth;
-    uint id;   // 0 = no surface
-    float2 gradient;
-};
-
-AtrousGuide atrousGuide(int2 t) {
-    uint4 g = CAUSTICS_TEXEL(guides, t);
-    float2 oct = float2(float(g.y & 0xFFFFu), float(g.y >> 16)) / 65535.0f * 2.0f - 1.0f;
-    AtrousGuide a;
-    a.normal = octDecode(oct);
-    a.depth = filterBitsToFloat(g.x);
-    a.id = g.z;
-    a.gradient = filterUnpackHalf2(g.w);
-    return a;
-}
-
 // The pool tiles that hold the group's taps (kFilterNoSlot outside the view or where a tile has none),
 // read once per group (atrousLoadSlots) instead of once per tap. A step up to kFilterTileSize / 2 keeps
 // every tap in the group's tile and its 8 neighbours: sSlots[0..8] holds them row by row from the one
@@ -93,6 +74,26 @@ uint atrousSumIndex(uint slot, int2 p) { return atrousSumIndexIn(params.sumsBase
 bool atrousIsDark(float4 c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f && c.w == 0.0f; }
 
 #if defined(kAtrousPairs)
+// A pixel's guide (filterPackAtrousGuide, caustics.temporal): normal, linear depth, id, depth slope. Only
+// the pairs pass reads guides.
+struct AtrousGuide {
+    float3 normal;
+    float depth;
+    uint id;   // 0 = no surface
+    float2 gradient;
+};
+
+AtrousGuide atrousGuide(int2 t) {
+    uint4 g = CAUSTICS_TEXEL(guides, t);
+    float2 oct = float2(float(g.y & 0xFFFFu), float(g.y >> 16)) / 65535.0f * 2.0f - 1.0f;
+    AtrousGuide a;
+    a.normal = octDecode(oct);
+    a.depth = filterBitsToFloat(g.x);
+    a.id = g.z;
+    a.gradient = filterUnpackHalf2(g.w);
+    return a;
+}
+
 void atrousThread(uint group, uint local) {
     int s = params.stepWidth;
     int2 tile = atrousLoadSlots(group, local);
