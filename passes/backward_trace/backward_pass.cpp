@@ -42,7 +42,9 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
                                     s.sphereMaxMagnification,
                                     s.sphereMinRadius,
                                     s.sphereMaxRadius,
-                                    0};   // sphereCapacity: set when the graph executes
+                                    0,    // sphereCapacity: set when the graph executes
+                                    s.secondTypeSplitLobes ? shader::kBackwardMaxSpheres : 1u,
+                                    0};
         CausticFrame h = f;
         rhi::BindingSetHandle sceneSet = f.in->sceneBindings->set;
         return [=](rg::PassContext& ctx) mutable {

@@ -22,7 +22,7 @@ inline constexpr uint32_t kForwardPushBytes = 32;
 // One frame slot's read-back sphere count (kStatSpheres) of the last frame recorded in it, with the
 // size of that frame; the host waited for that frame before executing a graph in the same slot.
 struct SphereCountReadback {
-    rhi::BufferHandle buffer;   // 4 bytes, Readback memory
+    rhi::BufferHandle buffer;   // 8 bytes, Readback memory: the specular pixels, the spheres
     uint32_t width = 0, height = 0;
     bool recorded = false;      // a frame's copy into it was recorded
 };

@@ -92,7 +92,7 @@ Status CausticResources::Impl::ensureSizeResources(uint32_t pixels, uint32_t ini
     // Slots by the specular surfaces in view and the counts (caustics/sphere_capacity.h), not one per
     // pixel: 2.07 M slots at 1080p were the largest persistent allocation (docs/caustics.md, "Memory").
     const uint64_t maxPrimitives = d.capabilities().maxPrimitiveCount;
-    uint32_t target = grownSphereAllocation(sphereSlots, sphereAllocationWanted, initialAllocation, pixels);
+    uint32_t target = grownSphereAllocation(sphereSlots, sphereAllocationWanted, initialAllocation, sphereSlotLimit(pixels));
     if (maxPrimitives != 0) target = std::max<uint32_t>(sphereSlots, uint32_t(std::min<uint64_t>(target, maxPrimitives)));   // checkDeviceLimits
     sphereAllocationWanted = 0;
     if (sphereBlas && target <= sphereSlots) return okStatus();

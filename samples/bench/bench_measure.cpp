@@ -15,6 +15,8 @@ CausticsSettings benchSettings(const BenchOptions& o) {
     s.maxSpecularDepth = o.maxDepth;
     s.filter = o.filter;
     s.filterSecondTypeApart = o.filterSecondTypeApart;
+    s.secondTypeSplitLobes = o.secondTypeSplitLobes;
+    s.sphereRadiusScale = o.sphereRadiusScale;
     s.mapOccluders = o.mapOccluders;
     s.photonsPerFrame = o.photons;
     s.causticTimeTargetMs = o.timeTargetMs;

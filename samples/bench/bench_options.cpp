@@ -87,6 +87,12 @@ Status setOption(BenchOptions& o, std::string_view flag, std::string_view value)
         if (value != "apart" && value != "merged")
             return makeError("--filter-second-type: expected apart or merged, got '" + std::string(value) + "'");
         o.filterSecondTypeApart = value == "apart";
+    } else if (flag == "--second-type-lobes") {
+        if (value != "split" && value != "sampled")
+            return makeError("--second-type-lobes: expected split or sampled, got '" + std::string(value) + "'");
+        o.secondTypeSplitLobes = value == "split";
+    } else if (flag == "--sphere-radius-scale") {
+        CAUSTICS_TRY(o.sphereRadiusScale, parsePositive(flag, value, 64.0f));
     } else if (flag == "--view") {
         if (value != "visible" && value != "away")
             return makeError("--view: expected visible or away, got '" + std::string(value) + "'");
@@ -134,6 +140,9 @@ std::string benchUsage() {
         "  --filter on|off             caustic filter (default off, as the paper measured)\n"
         "  --filter-second-type apart|merged  second type filtered on its own guides or with the first\n"
         "                              (default merged, CausticsSettings::filterSecondTypeApart)\n"
+        "  --second-type-lobes split|sampled  camera paths through glass split off their likely lobe\n"
+        "                              (default split) or pick one lobe per event (the paper)\n"
+        "  --sphere-radius-scale X     second-type gather radius in pixel footprint widths (0, 64] (default 0.75)\n"
         "  --view visible|away         caustics, frame: the scene's camera, or turned away from every caustic\n"
         "  --map-occluders on|off      caustic maps also draw occluders (default off: specular objects only)\n"
         "  --out DIR                   sweep, figures, memory: folder for the CSV / PFM files (created)\n"

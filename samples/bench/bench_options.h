@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "caustics/caustics_settings.h"
 #include "caustics/rhi/device.h"
 
 namespace caustics::bench {
@@ -27,6 +28,8 @@ struct BenchOptions {
     uint32_t mapResolution = 512;
     bool filter = false;            // the paper measured with the filter off
     bool filterSecondTypeApart = false;   // CausticsSettings::filterSecondTypeApart
+    bool secondTypeSplitLobes = true;     // CausticsSettings::secondTypeSplitLobes
+    float sphereRadiusScale = CausticsSettings{}.sphereRadiusScale;
     bool viewAway = false;          // caustics / frame: the camera turned away from every caustic (--view away)
     bool mapOccluders = false;      // CausticsSettings::mapOccluders
     std::string outDir;             // sweep: where the CSV files go

@@ -45,7 +45,7 @@ const char* sampleControlsUsage() {
            "  --accumulate N          average N unfiltered frames with different random keys: a\n"
            "                          reference-quality still (switches the filter off; 1..4096)\n"
            "  --sphere-radius-policy pixel|world   second-type gather radius: pixel footprint (default) or fixed\n"
-           "  --sphere-radius-scale X radius in camera pixels for the pixel policy (default 1, at most 64)\n"
+           "  --sphere-radius-scale X radius in pixel footprint widths for the pixel policy (default 0.75, at most 64)\n"
            "  --sphere-world-radius X radius in metres for the world policy (default 0.01, at most 1000)\n";
 }
 

@@ -14,7 +14,7 @@ enum class SphereRadiusChoice : uint8_t { Pixel, World };
 struct SampleControls {
     uint32_t seed = 1;               // CausticsSettings::seed: the RNG key of frame 0
     uint32_t accumulate = 0;         // 0: off; N: average N unfiltered frames (frame f uses key f)
-    float sphereRadiusScale = 1.0f;  // CausticsSettings::sphereRadiusScale (pixel policy), pixels
+    float sphereRadiusScale = 0.75f; // CausticsSettings::sphereRadiusScale (pixel policy), footprint widths
     SphereRadiusChoice sphereRadiusPolicy = SphereRadiusChoice::Pixel;
     float sphereWorldRadius = 0.01f; // CausticsSettings::sphereWorldRadius (world policy), metres
     bool sphereWorldRadiusGiven = false;

@@ -77,6 +77,7 @@ const std::map<std::string, Setter>& setters() {
         {"sphereMinRadius", floatField(&CausticsSettings::sphereMinRadius)},
         {"sphereMaxRadius", floatField(&CausticsSettings::sphereMaxRadius)},
         {"maxStoredHits", countField(&CausticsSettings::maxStoredHits)},
+        {"secondTypeSplitLobes", boolField(&CausticsSettings::secondTypeSplitLobes)},
         {"filter", boolField(&CausticsSettings::filter)},
         {"filterMaxHistory", countField(&CausticsSettings::filterMaxHistory)},
         {"filterPoolTiles", countField(&CausticsSettings::filterPoolTiles)},

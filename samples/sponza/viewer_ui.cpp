@@ -80,7 +80,7 @@ void settingsSection(ViewerState& s) {
     if (ImGui::Combo("sphere radius", &policy, "pixel footprint\0fixed world\0"))
         c.sphereRadiusPolicy = policy == 0 ? SphereRadiusPolicy::PixelFootprint : SphereRadiusPolicy::FixedWorld, changed = true;
     if (c.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint)
-        changed |= ImGui::SliderFloat("radius (pixels)", &c.sphereRadiusScale, 0.25f, 16.0f, "%.2f");
+        changed |= ImGui::SliderFloat("radius (footprints)", &c.sphereRadiusScale, 0.25f, 16.0f, "%.2f");
     else
         changed |= ImGui::SliderFloat("radius (m)", &c.sphereWorldRadius, 1e-4f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic);
     if (c.sphereRadiusPolicy == SphereRadiusPolicy::PixelFootprint && ImGui::TreeNode("footprint clamps")) {

@@ -49,6 +49,64 @@ struct SpecularEvent {
     bool mostLikely;
 };
 
+// The surface side and microfacet an event sees: d, n as for sampleSpecularEvent, u the two numbers
+// that pick the microfacet normal on a rough surface.
+struct SpecularFacet {
+    bool entering;
+    float3 nf;      // the normal facing the incoming ray
+    float etaI;
+    float etaT;
+    float alpha;    // GGX alpha
+    float3 m;       // the microfacet normal (nf where smooth)
+    float cosOm;    // <= 0: a back-facing microfacet, no event
+    float f;        // the dielectric's reflectance at m
+};
+
+CAUSTICS_FN SpecularFacet specularFacet(float3 d, float3 n, OpticalMaterial mat, float2 u) {
+    SpecularFacet s;
+    s.entering = dot(d, n) < 0.0f;
+    s.nf = s.entering ? n : -n;
+    s.etaI = s.entering ? 1.0f : mat.ior;
+    s.etaT = s.entering ? mat.ior : 1.0f;
+    if (mat.thinWalled) {
+        s.etaI = 1.0f;
+        s.etaT = mat.ior;
+    }
+    s.alpha = ggxAlpha(mat.roughness);
+    s.m = s.nf;
+    if (s.alpha > kSmoothAlpha) {
+        s.m = onbToWorld(onbFromNormal(s.nf), ggxSampleNormal(u, s.alpha));
+    }
+    s.cosOm = dot(-d, s.m);
+    // A thin wall reflects as a pane with both faces' inner reflections summed (common/fresnel.h).
+    s.f = mat.thinWalled ? thinPaneReflectance(s.cosOm, mat.ior) : fresnelDielectric(s.cosOm, s.etaT / s.etaI);
+    return s;
+}
+
+// The probabilities sampleSpecularEvent picks its lobes with, for the microfacet of u.xy, in the order
+// their intervals of u.z follow each other: metal, dielectric reflection, refraction, diffuse base.
+// All zero on a back-facing microfacet.
+struct SpecularLobeChances {
+    float metal;
+    float reflect;
+    float refract;
+    float diffuse;
+};
+
+CAUSTICS_FN SpecularLobeChances specularLobeChancesAt(SpecularFacet s, OpticalMaterial mat) {
+    SpecularLobeChances c;
+    float dielectric = s.cosOm > 0.0f ? 1.0f - mat.metallic : 0.0f;
+    c.metal = s.cosOm > 0.0f ? mat.metallic : 0.0f;
+    c.reflect = dielectric * s.f;
+    c.refract = dielectric * (1.0f - s.f) * mat.transmission;
+    c.diffuse = dielectric * (1.0f - s.f) * (1.0f - mat.transmission);
+    return c;
+}
+
+CAUSTICS_FN SpecularLobeChances specularLobeChances(float3 d, float3 n, OpticalMaterial mat, float2 u) {
+    return specularLobeChancesAt(specularFacet(d, n, mat, u), mat);
+}
+
 // d: unit propagation direction arriving at the surface; n: the surface's outward unit normal (the
 // side of the volume it bounds). dot(d, n) < 0 means the ray enters, > 0 that it leaves.
 // u: three uniform numbers in [0, 1).
@@ -60,30 +118,22 @@ CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMateria
     ev.insideMedium = false;
     ev.mostLikely = false;
 
-    bool entering = dot(d, n) < 0.0f;
-    float3 nf = entering ? n : -n;  // faces the incoming ray
-    float etaI = entering ? 1.0f : mat.ior;
-    float etaT = entering ? mat.ior : 1.0f;
-    if (mat.thinWalled) {
-        etaI = 1.0f;
-        etaT = mat.ior;
-    }
+    SpecularFacet s = specularFacet(d, n, mat, float2(u.x, u.y));
+    bool entering = s.entering;
+    float3 nf = s.nf;  // faces the incoming ray
+    float etaI = s.etaI;
+    float etaT = s.etaT;
     float3 wo = -d;
-    float alpha = ggxAlpha(mat.roughness);
-    float3 m = nf;
-    if (alpha > kSmoothAlpha) {
-        m = onbToWorld(onbFromNormal(nf), ggxSampleNormal(float2(u.x, u.y), alpha));
-    }
-    float cosOm = dot(wo, m);
+    float alpha = s.alpha;
+    float3 m = s.m;
+    float cosOm = s.cosOm;
     if (cosOm <= 0.0f) return ev;  // back-facing microfacet: zero contribution (Walter eq. 41)
     float cosOn = dot(wo, nf);
     float cosMn = dot(m, nf);
 
-    // A thin wall reflects as a pane with both faces' inner reflections summed (common/fresnel.h).
-    float f = mat.thinWalled ? thinPaneReflectance(cosOm, mat.ior) : fresnelDielectric(cosOm, etaT / etaI);
-    float dielectric = 1.0f - mat.metallic;
-    float pReflect = dielectric * f, pRefract = dielectric * (1.0f - f) * mat.transmission;
-    float pDiffuse = dielectric * (1.0f - f) * (1.0f - mat.transmission);
+    float f = s.f;
+    SpecularLobeChances chances = specularLobeChancesAt(s, mat);
+    float pReflect = chances.reflect, pRefract = chances.refract, pDiffuse = chances.diffuse;
     float pMost = max(max(mat.metallic, pReflect), max(pRefract, pDiffuse));
     float pick = u.z;
     float3 lobeWeight = splat3(1.0f);

@@ -3,7 +3,9 @@
 // caustics.backward in the shared dialect (paper 3.3, Figure 5; docs/shaders.md): one launch per entry
 // of caustics.specularPixels' list, a camera pixel whose G-buffer surface is specular. The launch traces
 // through the specular chain (radiance transport) to the first diffuse hit; that hit becomes an
-// integration sphere, appended with its AABB in the sphere BLAS at the next slot of a counter. Slots at
+// integration sphere, appended with its AABB in the sphere BLAS at the next slot of a counter. The
+// launch follows each event's most probable lobe and may start one more branch along the others
+// (kBackwardMaxSpheres spheres; docs/caustics.md "Second-type lobes"). Slots at
 // or past the capacity are dropped and counted (docs/caustics.md, "Second-type cost"); the AABBs past
 // the count are refused by the intersection shader (gather.h). The pixel's ray differentials (Igehy
 // 1999) follow the chain, so the sphere's radius is the pixel's real footprint on the receiver
@@ -19,7 +21,7 @@
 #include "common/volume.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (backward_bindings.h), 40 bytes.
+// Push constants (backward_bindings.h), 48 bytes.
 struct BackwardParams {
     uint radiusPolicy;        // kBackwardRadiusFootprint or kBackwardRadiusWorld
     float radiusScale;
@@ -31,7 +33,12 @@ struct BackwardParams {
     float minRadius;          // metres
     float maxRadius;          // metres
     uint sphereCapacity;      // AABB slots of the sphere BLAS build (caustics.sphereBlas)
+    uint maxSpheres;          // branches (spheres) a launch may have: 1 or kBackwardMaxSpheres (lobe splitting)
+    uint pad0;
 };
+// The most spheres one backward launch appends (docs/caustics.md "Second-type lobes"): the sphere
+// capacity allows this many per pixel (caustics/sphere_capacity.h).
+CAUSTICS_CONST uint kBackwardMaxSpheres = 2u;
 CAUSTICS_CONST uint kBackwardRadiusFootprint = 0u;
 CAUSTICS_CONST uint kBackwardRadiusWorld = 1u;
 
@@ -79,6 +86,86 @@ void appendSphere(CausticSphere s) {
     }
 }
 
+// One camera path through the specular chain: where its next ray starts and what it carries.
+struct BackwardBranch {
+    float3 origin;
+    float3 dir;
+    RayDifferential rd;
+    float3 throughput;
+    float3 sigma;       // absorption inside the medium the ray runs in (0 outside)
+    float pathLength;
+    uint events;
+    bool likelyPath;    // every event took its most probable lobe (the filter's guides)
+    bool primary;       // the camera ray itself: starts at the near plane
+};
+
+// The branch's integration sphere at its diffuse hit x (surface h) for pixel `pixel`. Pixel-footprint
+// radius: the differential's footprint parallelogram on the receiver, with the unfolded width (path
+// length x pixel angle) as the reference for the magnification clamps.
+void appendBranchSphere(BackwardBranch b, SurfaceHit h, float3 x, uint pixel, PinholeCamera cam) {
+    float3 nFacing = dot(h.shadingNormal, b.dir) < 0.0f ? h.shadingNormal : -h.shadingNormal;
+    float radius = params.worldRadius;
+    if (params.radiusPolicy == kBackwardRadiusFootprint) {
+        GatherRadiusLimits limits;
+        limits.scale = params.radiusScale;
+        limits.minMagnification = params.minMagnification;
+        limits.maxMagnification = params.maxMagnification;
+        limits.minRadius = params.minRadius;
+        limits.maxRadius = params.maxRadius;
+        radius = gatherDiskRadius(rayFootprintArea(b.rd), b.pathLength * sqrt(pinholePixelArea(cam)), limits);
+    }
+    CausticSphere s;
+    s.centre = x;
+    s.radius = max(clampRadiusAtWalls(x, nFacing, radius), min(params.minRadius, radius));
+    s.transmittance = b.throughput;
+    s.objectId = h.objectId;
+    s.normal = nFacing;
+    s.pixel = pixel;
+    s.outgoing = -b.dir;
+    s.likelyPath = b.likelyPath ? 1u : 0u;
+    appendSphere(s);
+}
+
+// Scatters branch b at a specular surface (h, hit at x, outward-side geometric normal ng) into event ev.
+void backwardScatter(CAUSTICS_INOUT(BackwardBranch) b, SpecularEvent ev, SurfaceHit h, TracePayload hit, float3 x, float3 ng,
+                     float3 throughputScale) {
+    ++b.events;
+    b.throughput *= ev.weight * throughputScale;
+    b.likelyPath = b.likelyPath && ev.mostLikely;
+    float3 dNdx;
+    float3 dNdy;
+    shadingNormalDerivatives(sceneSurfaceDerivatives(hit.instance, hit.primitive, hit.barycentrics), b.rd, dNdx, dNdy);
+    b.rd = scatterRayDifferential(b.rd, b.dir, ev, h.shadingNormal, dNdx, dNdy, h.optics);
+    b.dir = ev.direction;
+    b.sigma = ev.insideMedium ? volumeSigmaA(h.material.attenuationColor, h.material.attenuationDistance) : splat3(0.0f);
+    b.origin = x + (dot(b.dir, ng) > 0.0f ? ng : -ng) * rayEpsilon(x);
+    b.primary = false;
+}
+
+// Lobe `lobe`'s interval of the u.z that sampleSpecularEvent picks lobes with (0 metal, 1 reflection,
+// 2 refraction, 3 diffuse; SpecularLobeChances order): its start and its width, the lobe's chance.
+float2 lobeInterval(SpecularLobeChances c, uint lobe) {
+    float start = 0.0f;
+    if (lobe > 0u) start += c.metal;
+    if (lobe > 1u) start += c.reflect;
+    if (lobe > 2u) start += c.refract;
+    float width = lobe == 0u ? c.metal : (lobe == 1u ? c.reflect : (lobe == 2u ? c.refract : c.diffuse));
+    return float2(start, width);
+}
+
+// The u.z that picks lobe `lobe`: the middle of its interval.
+float lobePickCentre(SpecularLobeChances c, uint lobe) {
+    float2 i = lobeInterval(c, lobe);
+    return i.x + 0.5f * i.y;
+}
+
+// The u.z that picks among the lobes other than `lobe` in proportion to their chances, for u uniform in
+// [0, 1 - chance of `lobe`): u with `lobe`'s interval cut out.
+float lobePickOutside(SpecularLobeChances c, uint lobe, float u) {
+    float2 i = lobeInterval(c, lobe);
+    return min(u < i.x ? u : u + i.y, 0.99999994f);
+}
+
 void backwardLaunch(uint launch, uint launchCount) {
     if (launch == 0u) statsAtomicAdd(kStatBackwardLaunches, launchCount);
     // The list holds min(count, capacity) pixels; without indirect dispatch the grid is W x H and
@@ -91,77 +178,92 @@ void backwardLaunch(uint launch, uint launchCount) {
     PinholeCamera cam = cameraPinhole(camera);
     // The primary ray is re-traced rather than rebuilt from the G-buffer: the G-buffer's normal faces
     // the viewer, and the specular event needs the outward normal to know inside from outside.
-    float3 origin = cam.eye;
     // A jittered position inside the pixel: accumulated frames converge to the pixel's mean (what the
     // first-type splat measures), not to the value at its centre (docs/caustics.md).
     float2 pixelPosition = float2(p) + rngNextFloat2(rng);
     // The host's projection jitter shifts the image against the centred pinhole (cameraJitter).
     float2 pinholePosition = pixelPosition - cameraJitter(camera);
-    float3 dir = cameraRayDirection(cam, pinholePosition);
-    RayDifferential rd = pinholeRayDifferential(cam, pinholePosition);
-    float3 throughput = splat3(1.0f);
-    float3 sigma = splat3(0.0f);
-    float pathLength = 0.0f;
-    uint events = 0u;
-    bool likelyPath = true;   // every event took its most probable lobe (the filter's guides)
-    for (uint vertex = 0u; vertex <= params.maxDepth + 1u; ++vertex) {
-        TracePayload hit = traceScene(origin, vertex == 0u ? camera.clip.x : 0.0f, dir, 1.0e30f);
-        if (hit.t < 0.0f) break;
-        pathLength += hit.t;
-        if (dot(sigma, sigma) > 0.0f) throughput *= beerLambert(sigma, hit.t);   // inside an absorbing medium
-        SurfaceHit h = sceneSurfaceHit(hit.instance, hit.primitive, hit.barycentrics);
-        float3 x = origin + hit.t * dir;
-        float3 ng = dot(h.shadingNormal, h.geometricNormal) < 0.0f ? -h.geometricNormal : h.geometricNormal;
-        // Transfer onto the triangle's plane (Igehy eq. 12): dP then lies in the surface.
-        rd = transferRayDifferential(rd, dir, hit.t, h.geometricNormal);
-        if (sceneMaterialIsSpecular(h.material)) {
-            if (events >= params.maxDepth) break;
-            SpecularEvent ev = sampleSpecularEvent(dir, h.shadingNormal, h.optics, rngNextFloat3(rng), kTransportRadiance);
-            if (ev.kind == kEventAbsorbed) break;
-            likelyPath = likelyPath && ev.mostLikely;
-            if (ev.kind != kEventDiffuse) {
-                ++events;
-                throughput *= ev.weight;
-                float3 dNdx;
-                float3 dNdy;
-                shadingNormalDerivatives(sceneSurfaceDerivatives(hit.instance, hit.primitive, hit.barycentrics), rd, dNdx, dNdy);
-                rd = scatterRayDifferential(rd, dir, ev, h.shadingNormal, dNdx, dNdy, h.optics);
-                dir = ev.direction;
-                sigma = ev.insideMedium ? volumeSigmaA(h.material.attenuationColor, h.material.attenuationDistance)
-                                        : splat3(0.0f);
-                origin = x + (dot(dir, ng) > 0.0f ? ng : -ng) * rayEpsilon(x);
-                continue;
+    BackwardBranch b;
+    b.origin = cam.eye;
+    b.dir = cameraRayDirection(cam, pinholePosition);
+    b.rd = pinholeRayDifferential(cam, pinholePosition);
+    b.throughput = splat3(1.0f);
+    b.sigma = splat3(0.0f);
+    b.pathLength = 0.0f;
+    b.events = 0u;
+    b.likelyPath = true;
+    b.primary = true;
+    // Lobe splitting (docs/caustics.md "Second-type lobes"): while the launch may still add a branch,
+    // an event follows its most probable lobe with that probability as weight, and with the other lobes'
+    // probability it also starts a second branch along one of them (picked in proportion, weight as
+    // sampled). Once the launch holds params.maxSpheres branches, events pick one lobe as the paper does.
+    uint branches = 1u;
+    bool hasPending = false;
+    BackwardBranch pending = b;
+    for (uint guard = 0u; guard < 2u * (params.maxDepth + 2u); ++guard) {
+        bool ended = true;
+        TracePayload hit = traceScene(b.origin, b.primary ? camera.clip.x : 0.0f, b.dir, 1.0e30f);
+        if (hit.t >= 0.0f) {
+            ended = false;
+            b.pathLength += hit.t;
+            if (dot(b.sigma, b.sigma) > 0.0f) b.throughput *= beerLambert(b.sigma, hit.t);   // inside an absorbing medium
+            SurfaceHit h = sceneSurfaceHit(hit.instance, hit.primitive, hit.barycentrics);
+            float3 x = b.origin + hit.t * b.dir;
+            float3 ng = dot(h.shadingNormal, h.geometricNormal) < 0.0f ? -h.geometricNormal : h.geometricNormal;
+            // Transfer onto the triangle's plane (Igehy eq. 12): dP then lies in the surface.
+            b.rd = transferRayDifferential(b.rd, b.dir, hit.t, h.geometricNormal);
+            bool sphere = true;
+            if (sceneMaterialIsSpecular(h.material)) {
+                sphere = false;
+                ended = b.events >= params.maxDepth;
+                if (!ended) {
+                    float3 u = rngNextFloat3(rng);
+                    SpecularLobeChances c = specularLobeChances(b.dir, h.shadingNormal, h.optics, float2(u.x, u.y));
+                    uint most = 0u;
+                    float pMost = c.metal;
+                    if (c.reflect > pMost) { most = 1u; pMost = c.reflect; }
+                    if (c.refract > pMost) { most = 2u; pMost = c.refract; }
+                    if (c.diffuse > pMost) { most = 3u; pMost = c.diffuse; }
+                    float3 scale = splat3(1.0f);
+                    if (branches < params.maxSpheres && pMost > 0.0f) {
+                        if (u.z < 1.0f - pMost) {
+                            // The second branch, along a lobe other than the most probable one.
+                            SpecularEvent other = sampleSpecularEvent(b.dir, h.shadingNormal, h.optics,
+                                                                      float3(u.x, u.y, lobePickOutside(c, most, u.z)), kTransportRadiance);
+                            if (other.kind == kEventReflect || other.kind == kEventRefract) {
+                                pending = b;
+                                backwardScatter(pending, other, h, hit, x, ng, splat3(1.0f));
+                                hasPending = true;
+                                ++branches;
+                            }
+                            // A diffuse-base lobe there: the path ends on the specular surface (below).
+                        }
+                        u.z = lobePickCentre(c, most);
+                        scale = splat3(pMost);
+                    }
+                    SpecularEvent ev = sampleSpecularEvent(b.dir, h.shadingNormal, h.optics, u, kTransportRadiance);
+                    if (ev.kind == kEventAbsorbed) ended = true;
+                    else if (ev.kind != kEventDiffuse) backwardScatter(b, ev, h, hit, x, ng, scale);
+                    else {
+                        b.throughput *= scale;
+                        b.likelyPath = b.likelyPath && ev.mostLikely;
+                        sphere = true;
+                    }
+                }
+            }
+            // Seen directly. On the specular surface itself (its diffuse lobe) the first-type pass splats into
+            // this pixel already. A ray whose jitter crossed the glass's silhouette onto a diffuse surface
+            // does not: that pass splats only where the G-buffer (here the glass) shows the receiver. Its
+            // sphere gathers the first-type light with throughput 1 (docs/caustics.md, "Glass edges").
+            if (sphere && !ended) {
+                ended = true;
+                if (!(b.events == 0u && sceneMaterialIsSpecular(h.material))) appendBranchSphere(b, h, x, pixel, cam);
             }
         }
-        // Seen directly. On the specular surface itself (its diffuse lobe) the first-type pass splats into
-        // this pixel already. A ray whose jitter crossed the glass's silhouette onto a diffuse surface
-        // does not: that pass splats only where the G-buffer (here the glass) shows the receiver. Its
-        // sphere gathers the first-type light with throughput 1 (docs/caustics.md, "Glass edges").
-        if (events == 0u && sceneMaterialIsSpecular(h.material)) break;
-        // Pixel-footprint radius: the differential's footprint parallelogram on the receiver, with the
-        // unfolded width (path length x pixel angle) as the reference for the magnification clamps.
-        float3 nFacing = dot(h.shadingNormal, dir) < 0.0f ? h.shadingNormal : -h.shadingNormal;
-        float radius = params.worldRadius;
-        if (params.radiusPolicy == kBackwardRadiusFootprint) {
-            GatherRadiusLimits limits;
-            limits.scale = params.radiusScale;
-            limits.minMagnification = params.minMagnification;
-            limits.maxMagnification = params.maxMagnification;
-            limits.minRadius = params.minRadius;
-            limits.maxRadius = params.maxRadius;
-            radius = gatherDiskRadius(rayFootprintArea(rd), pathLength * sqrt(pinholePixelArea(cam)), limits);
-        }
-        CausticSphere s;
-        s.centre = x;
-        s.radius = max(clampRadiusAtWalls(x, nFacing, radius), min(params.minRadius, radius));
-        s.transmittance = throughput;
-        s.objectId = h.objectId;
-        s.normal = nFacing;
-        s.pixel = pixel;
-        s.outgoing = -dir;
-        s.likelyPath = likelyPath ? 1u : 0u;
-        appendSphere(s);
-        return;
+        if (!ended) continue;
+        if (!hasPending) return;
+        b = pending;
+        hasPending = false;
     }
 }
 #endif  // !CAUSTICS_LANG_CPP

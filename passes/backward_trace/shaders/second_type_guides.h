@@ -4,8 +4,9 @@
 // "Second-type guides"): a pixel whose camera path went through glass shows a caustic that lies on the
 // receiver the path reached, not on the glass the G-buffer holds. So the receiver's linear depth (clip w),
 // its normal (facing the arriving path), its object id and its screen motion (where the receiver point
-// was last frame minus where it is now, pixels) are written at the pixel from that pixel's sphere
-// (caustics.backward: at most one per pixel). Pixels without a sphere hold zeros (id 0: no receiver).
+// was last frame minus where it is now, pixels) are written at the pixel from that pixel's likely-path
+// sphere (caustics.backward: at most one per pixel; a lobe branch's sphere is never likely). Pixels
+// without one hold zeros (id 0: no receiver) until the fill.
 // depthMotion holds (depth, motion x, motion y, last frame's depth): the filter's temporal pass reads it
 // as its linear depth (.x) and, for the second type, reprojects with .yz and tests .w.
 // Entries: second_type_guides.comp, second_type_guides.hlsl; one pipeline, two dispatches (clearPass).

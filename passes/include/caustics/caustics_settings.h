@@ -54,7 +54,7 @@ struct CausticsSettings {
     // (docs/caustics.md, "Maps without occluders").
     bool mapOccluders = false;
     SphereRadiusPolicy sphereRadiusPolicy = SphereRadiusPolicy::PixelFootprint;
-    float sphereRadiusScale = 1.0f;     // PixelFootprint: radius in footprint widths (camera pixels)
+    float sphereRadiusScale = 0.75f;    // PixelFootprint: radius in footprint widths (camera pixels)
     float sphereWorldRadius = 0.01f;    // FixedWorld: metres
     // PixelFootprint clamps. Magnification: footprint width / unfolded width; ray differentials blow
     // up at folds of the camera path and at grazing receivers. Radii in metres. Both policies keep
@@ -64,6 +64,11 @@ struct CausticsSettings {
     float sphereMinRadius = 1.0e-4f;
     float sphereMaxRadius = 0.25f;
     uint32_t maxStoredHits = 1u << 20;  // forward diffuse hits kept for the second-type gather
+    // Camera paths through glass follow each event's most probable lobe with its probability as weight
+    // and start a second branch (sphere) along the others with theirs, once per pixel (docs/caustics.md
+    // "Second-type lobes"): no pixel loses the caustic behind the glass to a sampled Fresnel reflection.
+    // Off: one lobe picked per event (the paper), one sphere per specular pixel.
+    bool secondTypeSplitLobes = true;
     // The caustic filter (docs/caustics.md "Filter"; SVGF-like, the paper measured with it off).
     bool filter = true;
     // Filter the second type apart, on the receiver seen through the glass (its own guides, history and

@@ -75,8 +75,9 @@ TEST_F(SecondTypeCost, BackwardLaunchesOncePerSpecularPixelAndEveryMirrorPixelGe
     EXPECT_EQ(r.stats[kStatSpecularPixels], specular.size());
     const bool indirect = device->capabilities().rayTracingIndirect;
     EXPECT_EQ(r.stats[kStatBackwardLaunches], indirect ? specular.size() : size_t(kSize) * kSize);
-    // First frame of its slot: no earlier count, so the capacity is every pixel and nothing drops.
-    EXPECT_EQ(r.stats[kStatSphereCapacity], kSize * kSize);
+    // First frame of its slot: no earlier count, so the capacity is the slot limit (kMaxSpheresPerPixel
+    // a pixel: the lobe branches) and nothing drops.
+    EXPECT_EQ(r.stats[kStatSphereCapacity], kMaxSpheresPerPixel * kSize * kSize);
     EXPECT_EQ(r.stats[kStatSpheresDropped], 0u);
     ASSERT_EQ(r.spheres.size(), r.stats[kStatSpheres]);
     std::set<uint32_t> seen;

@@ -10,6 +10,7 @@
 #include "caustics/caustics_module.h"
 #include "caustics/scene/builtin_scenes.h"
 #include "caustics/scene/gpu_scene.h"
+#include "caustics/sphere_capacity.h"
 #include "builtin_scene_gpu_test.h"
 
 namespace caustics::test {
@@ -82,15 +83,15 @@ TEST_F(MemoryReport, EntriesFollowTheFrameThatRan) {
 
     // Acceleration structures report the driver's sizes: the scene's (built at GpuScene::create) and the
     // spheres' (docs/caustics.md "Memory"): a BLAS of one AABB per sphere slot and a TLAS of that one
-    // BLAS. Below the 2^14-slot floor the slots are W x H: 4x the pixels, 4x the AABBs (24 bytes each,
-    // exact) and about 4x the BLAS (lavapipe: the [ measured ] line; bound 3.5 .. 4.5, a BLAS that did
+    // BLAS. Below the 2^15-slot floor the slots are the slot limit, 2 x W x H (a pixel's sphere and its
+    // lobe branch's, caustics/sphere_capacity.h): 4x the pixels, 4x the AABBs (24 bytes each, exact) and about 4x the BLAS (lavapipe: the [ measured ] line; bound 3.5 .. 4.5, a BLAS that did
     // not follow the image would give 1); the one-instance TLAS is the same at both sizes.
     EXPECT_GT(large["scene.tlas"], 0u);
     EXPECT_GT(large["scene.slot0.tlas"], 0u);
     EXPECT_GT(large["caustics.sphere_tlas"], 0u);
     EXPECT_EQ(large["caustics.sphere_tlas"], small["caustics.sphere_tlas"]);
-    EXPECT_EQ(large["caustics.sphere_aabbs"], 128u * 96u * 24u);
-    EXPECT_EQ(small["caustics.sphere_aabbs"], 64u * 48u * 24u);
+    EXPECT_EQ(large["caustics.sphere_aabbs"], kMaxSpheresPerPixel * 128u * 96u * 24u);
+    EXPECT_EQ(small["caustics.sphere_aabbs"], kMaxSpheresPerPixel * 64u * 48u * 24u);
     uint64_t blases = 0;
     for (const auto& [name, bytes] : large)
         if (name.rfind("scene.blases (", 0) == 0) blases = bytes;

@@ -11,8 +11,9 @@
 // CAUSTICS_GOLDEN_SEED=N runs the comparison with seed N and prints both metrics; those runs fail by
 // design) and kept beside the goldens in tests/image/golden/caustics_noise.txt ("case mean-L1
 // max-energy-deviation"), which scripts/update-goldens.sh rewrites with the goldens. Measured
-// 2026-11-30 (lavapipe, second-type radius one footprint width): block L1 0.40 / 0.25 / 0.17
-// (built-in first / second / filtered), 0.107 / 0.74 / 0.068 (ball), 0.083 / 0.17 / 0.057 (ring); the
+// 2026-12-03 (lavapipe, the second type's lobe split and 0.75-footprint gather disk, docs/caustics.md
+// "Second-type lobes"): block L1 0.40 / 0.27 / 0.20 (built-in first / second / filtered), 0.107 / 0.74 /
+// 0.072 (ball), 0.083 / 0.22 / 0.068 (ring; the smaller disk gathers fewer photons a frame); the
 // filtered figures are the SVGF-like filter's (docs/caustics.md "Filter"), which keeps more of one
 // frame's detail than the earlier blur. The golden's own seed reproduces it (measured
 // block L1 4e-5 to 8e-5, energy 1.00000 +- 1e-5: the order of float atomics and the EXR's half-float

@@ -27,7 +27,8 @@ TEST(SampleControls, DefaultsMatchCausticsSettings) {
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r->controls.seed, 1u);
     EXPECT_EQ(r->controls.accumulate, 0u);
-    EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 1.0f);  // CausticsSettings::sphereRadiusScale
+    EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, CausticsSettings{}.sphereRadiusScale);
+    EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 0.75f);
     EXPECT_EQ(r->controls.sphereRadiusPolicy, SphereRadiusChoice::Pixel);
     EXPECT_FLOAT_EQ(r->controls.sphereWorldRadius, 0.01f);
 }
