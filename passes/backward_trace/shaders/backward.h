@@ -235,8 +235,15 @@ void backwardLaunch(uint launch, uint launchCount) {
                                 backwardScatter(pending, other, h, hit, x, ng, splat3(1.0f));
                                 hasPending = true;
                                 ++branches;
+                            } else if (other.kind == kEventDiffuse && b.events > 0u) {
+                                // The diffuse base: that branch ends on this specular surface, its sphere
+                                // here, as a sampled event's would (at the first event the first type has it).
+                                BackwardBranch onSurface = b;
+                                onSurface.throughput *= other.weight;
+                                onSurface.likelyPath = false;
+                                appendBranchSphere(onSurface, h, x, pixel, cam);
+                                ++branches;
                             }
-                            // A diffuse-base lobe there: the path ends on the specular surface (below).
                         }
                         u.z = lobePickCentre(c, most);
                         scale = splat3(pMost);
