@@ -107,52 +107,75 @@ CAUSTICS_FN SpecularLobeChances specularLobeChances(float3 d, float3 n, OpticalM
     return specularLobeChancesAt(specularFacet(d, n, mat, u), mat);
 }
 
-// d: unit propagation direction arriving at the surface; n: the surface's outward unit normal (the
-// side of the volume it bounds). dot(d, n) < 0 means the ray enters, > 0 that it leaves.
-// u: three uniform numbers in [0, 1).
-CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMaterial mat, float3 u, uint transportMode) {
+// Lobe `lobe`'s interval of the u.z that sampleSpecularEvent picks lobes with (0 metal, 1 reflection,
+// 2 refraction, 3 diffuse; SpecularLobeChances order): its start and its width, the lobe's chance.
+CAUSTICS_FN float2 specularLobeInterval(SpecularLobeChances c, uint lobe) {
+    float start = 0.0f;
+    if (lobe > 0u) start += c.metal;
+    if (lobe > 1u) start += c.reflect;
+    if (lobe > 2u) start += c.refract;
+    float width = lobe == 0u ? c.metal : (lobe == 1u ? c.reflect : (lobe == 2u ? c.refract : c.diffuse));
+    return float2(start, width);
+}
+
+// The u.z that picks lobe `lobe`: the middle of its interval.
+CAUSTICS_FN float specularLobePickCentre(SpecularLobeChances c, uint lobe) {
+    float2 i = specularLobeInterval(c, lobe);
+    return i.x + 0.5f * i.y;
+}
+
+// The u.z that picks among the lobes other than `lobe` in proportion to their chances, for u uniform in
+// [0, 1 - chance of `lobe`): u with `lobe`'s interval cut out.
+CAUSTICS_FN float specularLobePickOutside(SpecularLobeChances c, uint lobe, float u) {
+    float2 i = specularLobeInterval(c, lobe);
+    return min(u < i.x ? u : u + i.y, 0.99999994f);
+}
+
+// The most probable lobe (SpecularLobeChances order; the first of equals).
+CAUSTICS_FN uint specularMostLikelyLobe(SpecularLobeChances c) {
+    uint most = 0u;
+    float p = c.metal;
+    if (c.reflect > p) { most = 1u; p = c.reflect; }
+    if (c.refract > p) { most = 2u; p = c.refract; }
+    if (c.diffuse > p) most = 3u;
+    return most;
+}
+
+// sampleSpecularEvent on the facet s (specularFacet of d, n, mat and the u.xy it was given), with pick
+// the u.z that picks the lobe: a caller that looked at the facet's lobe chances first does not
+// compute the facet twice.
+CAUSTICS_FN SpecularEvent sampleSpecularEventOnFacet(SpecularFacet s, float3 d, OpticalMaterial mat, float pick, uint transportMode) {
     SpecularEvent ev;
     ev.direction = d;
     ev.weight = splat3(0.0f);
     ev.kind = kEventAbsorbed;
     ev.insideMedium = false;
     ev.mostLikely = false;
-
-    SpecularFacet s = specularFacet(d, n, mat, float2(u.x, u.y));
-    bool entering = s.entering;
-    float3 nf = s.nf;  // faces the incoming ray
-    float etaI = s.etaI;
-    float etaT = s.etaT;
+    if (s.cosOm <= 0.0f) return ev;  // back-facing microfacet: zero contribution (Walter eq. 41)
     float3 wo = -d;
-    float alpha = s.alpha;
-    float3 m = s.m;
-    float cosOm = s.cosOm;
-    if (cosOm <= 0.0f) return ev;  // back-facing microfacet: zero contribution (Walter eq. 41)
-    float cosOn = dot(wo, nf);
-    float cosMn = dot(m, nf);
+    float cosOn = dot(wo, s.nf);
+    float cosMn = dot(s.m, s.nf);
 
-    float f = s.f;
     SpecularLobeChances chances = specularLobeChancesAt(s, mat);
     float pReflect = chances.reflect, pRefract = chances.refract, pDiffuse = chances.diffuse;
     float pMost = max(max(mat.metallic, pReflect), max(pRefract, pDiffuse));
-    float pick = u.z;
     float3 lobeWeight = splat3(1.0f);
     bool doReflect = false;
     if (pick < mat.metallic) {
         doReflect = true;
-        lobeWeight = fresnelSchlick(mat.baseColor, cosOm);
+        lobeWeight = fresnelSchlick(mat.baseColor, s.cosOm);
         ev.mostLikely = mat.metallic >= pMost;
     } else {
         pick = (pick - mat.metallic) / max(1.0f - mat.metallic, 1.0e-7f);
-        if (pick < f) {
+        if (pick < s.f) {
             doReflect = true;
             ev.mostLikely = pReflect >= pMost;
         } else {
-            pick = (pick - f) / max(1.0f - f, 1.0e-7f);
+            pick = (pick - s.f) / max(1.0f - s.f, 1.0e-7f);
             if (pick >= mat.transmission) {
                 ev.kind = kEventDiffuse;
                 ev.weight = splat3(1.0f);
-                ev.insideMedium = !entering && !mat.thinWalled;
+                ev.insideMedium = !s.entering && !mat.thinWalled;
                 ev.mostLikely = pDiffuse >= pMost;
                 return ev;
             }
@@ -162,10 +185,10 @@ CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMateria
 
     float3 wi;
     if (doReflect) {
-        wi = reflect(d, m);
-        if (dot(wi, nf) <= 0.0f) return ev;
+        wi = reflect(d, s.m);
+        if (dot(wi, s.nf) <= 0.0f) return ev;
         ev.kind = kEventReflect;
-        ev.insideMedium = !entering && !mat.thinWalled;
+        ev.insideMedium = !s.entering && !mat.thinWalled;
     } else if (mat.thinWalled) {
         // A thin wall is two parallel interfaces: the ray leaves along its incident direction.
         wi = d;
@@ -173,18 +196,25 @@ CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMateria
         ev.insideMedium = false;
         lobeWeight = mat.baseColor;
     } else {
-        if (!refractDirection(d, m, etaI / etaT, wi)) return ev;  // cannot happen: F = 1 under TIR
-        if (dot(wi, nf) >= 0.0f) return ev;
+        if (!refractDirection(d, s.m, s.etaI / s.etaT, wi)) return ev;  // cannot happen: F = 1 under TIR
+        if (dot(wi, s.nf) >= 0.0f) return ev;
         ev.kind = kEventRefract;
-        ev.insideMedium = entering;
+        ev.insideMedium = s.entering;
         lobeWeight = mat.baseColor;
-        if (transportMode == kTransportRadiance) lobeWeight = lobeWeight * ((etaI * etaI) / (etaT * etaT));
+        if (transportMode == kTransportRadiance) lobeWeight = lobeWeight * ((s.etaI * s.etaI) / (s.etaT * s.etaT));
     }
     float micro = 1.0f;
-    if (alpha > kSmoothAlpha) micro = ggxSampleWeight(cosOn, dot(wi, nf), cosOm, dot(wi, m), cosMn, alpha);
+    if (s.alpha > kSmoothAlpha) micro = ggxSampleWeight(cosOn, dot(wi, s.nf), s.cosOm, dot(wi, s.m), cosMn, s.alpha);
     ev.direction = wi;
     ev.weight = lobeWeight * micro;
     return ev;
+}
+
+// d: unit propagation direction arriving at the surface; n: the surface's outward unit normal (the
+// side of the volume it bounds). dot(d, n) < 0 means the ray enters, > 0 that it leaves.
+// u: three uniform numbers in [0, 1): u.xy pick the microfacet, u.z the lobe.
+CAUSTICS_FN SpecularEvent sampleSpecularEvent(float3 d, float3 n, OpticalMaterial mat, float3 u, uint transportMode) {
+    return sampleSpecularEventOnFacet(specularFacet(d, n, mat, float2(u.x, u.y)), d, mat, u.z, transportMode);
 }
 
 CAUSTICS_SHARED_END

@@ -142,30 +142,6 @@ void backwardScatter(CAUSTICS_INOUT(BackwardBranch) b, SpecularEvent ev, Surface
     b.primary = false;
 }
 
-// Lobe `lobe`'s interval of the u.z that sampleSpecularEvent picks lobes with (0 metal, 1 reflection,
-// 2 refraction, 3 diffuse; SpecularLobeChances order): its start and its width, the lobe's chance.
-float2 lobeInterval(SpecularLobeChances c, uint lobe) {
-    float start = 0.0f;
-    if (lobe > 0u) start += c.metal;
-    if (lobe > 1u) start += c.reflect;
-    if (lobe > 2u) start += c.refract;
-    float width = lobe == 0u ? c.metal : (lobe == 1u ? c.reflect : (lobe == 2u ? c.refract : c.diffuse));
-    return float2(start, width);
-}
-
-// The u.z that picks lobe `lobe`: the middle of its interval.
-float lobePickCentre(SpecularLobeChances c, uint lobe) {
-    float2 i = lobeInterval(c, lobe);
-    return i.x + 0.5f * i.y;
-}
-
-// The u.z that picks among the lobes other than `lobe` in proportion to their chances, for u uniform in
-// [0, 1 - chance of `lobe`): u with `lobe`'s interval cut out.
-float lobePickOutside(SpecularLobeChances c, uint lobe, float u) {
-    float2 i = lobeInterval(c, lobe);
-    return min(u < i.x ? u : u + i.y, 0.99999994f);
-}
-
 void backwardLaunch(uint launch, uint launchCount) {
     if (launch == 0u) statsAtomicAdd(kStatBackwardLaunches, launchCount);
     // The list holds min(count, capacity) pixels; without indirect dispatch the grid is W x H and
@@ -199,7 +175,7 @@ void backwardLaunch(uint launch, uint launchCount) {
     // sampled). Once the launch holds params.maxSpheres branches, events pick one lobe as the paper does.
     uint branches = 1u;
     bool hasPending = false;
-    BackwardBranch pending = b;
+    BackwardBranch pending = b;   // read only after a spawn wrote it; initialised for the compilers' flow checks
     for (uint guard = 0u; guard < 2u * (params.maxDepth + 2u); ++guard) {
         bool ended = true;
         TracePayload hit = traceScene(b.origin, b.primary ? camera.clip.x : 0.0f, b.dir, 1.0e30f);
@@ -218,18 +194,18 @@ void backwardLaunch(uint launch, uint launchCount) {
                 ended = b.events >= params.maxDepth;
                 if (!ended) {
                     float3 u = rngNextFloat3(rng);
-                    SpecularLobeChances c = specularLobeChances(b.dir, h.shadingNormal, h.optics, float2(u.x, u.y));
-                    uint most = 0u;
-                    float pMost = c.metal;
-                    if (c.reflect > pMost) { most = 1u; pMost = c.reflect; }
-                    if (c.refract > pMost) { most = 2u; pMost = c.refract; }
-                    if (c.diffuse > pMost) { most = 3u; pMost = c.diffuse; }
+                    // The facet (microfacet, Fresnel) once: the lobe chances and both branches' events share it.
+                    SpecularFacet facet = specularFacet(b.dir, h.shadingNormal, h.optics, float2(u.x, u.y));
+                    SpecularLobeChances c = specularLobeChancesAt(facet, h.optics);
+                    uint most = specularMostLikelyLobe(c);
+                    float pMost = specularLobeInterval(c, most).y;
+                    float pick = u.z;
                     float3 scale = splat3(1.0f);
                     if (branches < params.maxSpheres && pMost > 0.0f) {
                         if (u.z < 1.0f - pMost) {
                             // The second branch, along a lobe other than the most probable one.
-                            SpecularEvent other = sampleSpecularEvent(b.dir, h.shadingNormal, h.optics,
-                                                                      float3(u.x, u.y, lobePickOutside(c, most, u.z)), kTransportRadiance);
+                            SpecularEvent other = sampleSpecularEventOnFacet(facet, b.dir, h.optics, specularLobePickOutside(c, most, u.z),
+                                                                             kTransportRadiance);
                             if (other.kind == kEventReflect || other.kind == kEventRefract) {
                                 pending = b;
                                 backwardScatter(pending, other, h, hit, x, ng, splat3(1.0f));
@@ -245,10 +221,10 @@ void backwardLaunch(uint launch, uint launchCount) {
                                 ++branches;
                             }
                         }
-                        u.z = lobePickCentre(c, most);
+                        pick = specularLobePickCentre(c, most);
                         scale = splat3(pMost);
                     }
-                    SpecularEvent ev = sampleSpecularEvent(b.dir, h.shadingNormal, h.optics, u, kTransportRadiance);
+                    SpecularEvent ev = sampleSpecularEventOnFacet(facet, b.dir, h.optics, pick, kTransportRadiance);
                     if (ev.kind == kEventAbsorbed) ended = true;
                     else if (ev.kind != kEventDiffuse) backwardScatter(b, ev, h, hit, x, ng, scale);
                     else {

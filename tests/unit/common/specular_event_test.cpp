@@ -115,3 +115,53 @@ TEST(SpecularEvent, RoughGlassDoesNotCreateEnergyAndKeepsMostOfIt) {
         EXPECT_GT(sum / n, 0.85) << roughness;  // GGX single-scatter loss at these roughnesses is a few %
     }
 }
+
+// The backward pass's lobe split picks lobes by u.z inside the intervals specularLobeInterval names: the
+// centre of a lobe's interval must sample that lobe, and specularLobePickOutside must never land in it.
+// A partly transmissive, partly metallic rough dielectric has all four lobes (chances 0.2 / ~0.03 / ~0.38 /
+// ~0.38); u.z on a 1e-3 grid covers every interval.
+TEST(SpecularEvent, LobeIntervalsPickTheirOwnLobeAndOutsidePicksAnother) {
+    sh::OpticalMaterial m = glass(0.3f);
+    m.metallic = 0.2f;
+    m.transmission = 0.5f;
+    const glm::vec3 d = glm::normalize(glm::vec3(0.3f, 0.0f, -1.0f));
+    const glm::vec2 uv(0.37f, 0.61f);
+    const sh::SpecularFacet facet = sh::specularFacet(d, kUp, m, uv);
+    const sh::SpecularLobeChances c = sh::specularLobeChancesAt(facet, m);
+    ASSERT_GT(c.metal, 0.0f);
+    ASSERT_GT(c.reflect, 0.0f);
+    ASSERT_GT(c.refract, 0.0f);
+    ASSERT_GT(c.diffuse, 0.0f);
+    EXPECT_NEAR(c.metal + c.reflect + c.refract + c.diffuse, 1.0f, 1e-6f);
+    // Metal and dielectric reflection both reflect: tell them apart by the weight (Schlick vs 1).
+    auto lobeOf = [&](float pick) {
+        const sh::SpecularEvent ev = sh::sampleSpecularEventOnFacet(facet, d, m, pick, sh::kTransportRadiance);
+        if (ev.kind == sh::kEventReflect) return pick < c.metal ? 0u : 1u;
+        return ev.kind == sh::kEventRefract ? 2u : (ev.kind == sh::kEventDiffuse ? 3u : 99u);
+    };
+    for (uint32_t lobe = 0; lobe < 4; ++lobe) {
+        EXPECT_EQ(lobeOf(sh::specularLobePickCentre(c, lobe)), lobe) << "centre of lobe " << lobe;
+        const float chance = sh::specularLobeInterval(c, lobe).y;
+        for (float u = 0.0f; u < 1.0f - chance; u += 1e-3f)
+            EXPECT_NE(lobeOf(sh::specularLobePickOutside(c, lobe, u)), lobe) << "lobe " << lobe << ", u " << u;
+    }
+    EXPECT_EQ(sh::specularMostLikelyLobe(c), c.refract >= c.diffuse ? 2u : 3u);
+}
+
+// The facet split out of sampleSpecularEvent changes nothing: the same numbers give the same event.
+TEST(SpecularEvent, SamplingOnAComputedFacetEqualsSamplingFromScratch) {
+    sh::Rng rng = sh::rngCreate(7, 0, 0, 0);
+    sh::OpticalMaterial m = glass(0.4f);
+    m.transmission = 0.7f;
+    for (int i = 0; i < 1000; ++i) {
+        const glm::vec3 u = sh::rngNextFloat3(rng);
+        const glm::vec3 d = glm::normalize(glm::vec3(u.x - 0.5f, u.y - 0.5f, i % 2 ? -1.0f : 1.0f));
+        const sh::SpecularEvent a = sh::sampleSpecularEvent(d, kUp, m, u, sh::kTransportRadiance);
+        const sh::SpecularEvent b =
+            sh::sampleSpecularEventOnFacet(sh::specularFacet(d, kUp, m, glm::vec2(u.x, u.y)), d, m, u.z, sh::kTransportRadiance);
+        EXPECT_EQ(a.kind, b.kind);
+        EXPECT_EQ(a.direction, b.direction);
+        EXPECT_EQ(a.weight, b.weight);
+        EXPECT_EQ(a.mostLikely, b.mostLikely);
+    }
+}
