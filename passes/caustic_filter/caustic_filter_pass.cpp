@@ -12,7 +12,7 @@
 //   caustics.atrous.N   edge-aware a-trous iterations stopping at depth, normal, object and luminance,
 //                       energy-preserving: the symmetric pair weights and their sums (.pairs, into
 //                       one of two alternating regions of caustics.atrous.sums, zeroed by
-//                       caustics.atrous.clear or the iteration before), then the shares
+//                       caustics.variance or the iteration before), then the shares
 //   caustics.filterOutput  (atrousIterations 0 only) the temporal result into caustics.radiance
 // The last pass writes into caustics.radiance, over the listed tiles (the others hold this frame's zeros).
 // With settings.filter off the combined radiance is returned unfiltered. The second type filtered apart
@@ -87,7 +87,7 @@ struct FilterFrame {
 // Iteration i (step 2^i) on `radiance` (pool: rgb, a deviation), which it replaces with its result; the
 // last iteration writes into `output` (caustics.radiance) instead. Two passes: each pixel's pair weights to
 // its 12 later neighbours, added to both pixels' weight sums in the iteration's region of `sums`
-// (addAtrousSumsClear), then the shares w / W_q, which zero the next iteration's region
+// (caustics.variance zeroes the first), then the shares w / W_q, which zero the next iteration's region
 // (passes/caustic_filter/shaders/atrous.h; docs/caustics.md "Cost").
 void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterFrame& ff, rg::RgTexture& radiance,
                         rg::RgTexture& output, rg::RgBuffer& sums, bool jitteredGuides) {
@@ -145,24 +145,6 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                              push, t.args);
         };
     });
-}
-
-// caustics.atrous.clear: the weight sums W of the a-trous iterations, two regions of a pool's texels that
-// the iterations alternate between; this zeroes the first iteration's, each shares pass the next one's
-// (one transfer in all: docs/caustics.md "Cost").
-rg::RgBuffer addAtrousSumsClear(rg::RenderGraph& graph, CausticFrame& f, const FilterFrame& ff) {
-    rg::RgBuffer sums;
-    graph.addPass(filterPassName(f, "caustics.atrous.clear"), [&](rg::PassBuilder& b) {
-        const uint64_t regionBytes = uint64_t(ff.poolTiles) * shader::kFilterGroupThreads * 4;
-        const uint64_t bytes = (f.in->settings.atrousIterations > 1 ? 2 : 1) * regionBytes;
-        sums = b.write(b.createBuffer("caustics.atrous.sums", rhi::BufferDesc().setByteSize(bytes)
-                                                                  .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::CopyDest)
-                                                                  .setDebugName("caustics.atrousSums")),
-                       rg::Access::CopyDest);
-        rg::RgBuffer o = sums;
-        return [=](rg::PassContext& ctx) { ctx.cmd().fillBuffer(ctx.buffer(o), 0u, 0, regionBytes); };
-    });
-    return sums;
 }
 
 // caustics.temporal: last frame's history reprojected into this frame's (ping-pong, no copy).
@@ -285,14 +267,24 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         return ff.tiles.args;
     }
     rg::RgTexture radiance;
+    rg::RgBuffer sums;
     graph.addPass(filterPassName(f, "caustics.variance"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in[] = {b.read(raw), b.read(color), b.read(guides), b.read(g.objectId), b.read(g.normalRoughness)};
         readTiles(b, ff.tiles, true);
         radiance = b.write(b.createTexture("caustics.variance", poolImageDesc(ff.poolTiles, rhi::Format::RGBA16_FLOAT,
                                                                               "caustics.variance")));
+        // The a-trous weight sums W: two regions of a pool's texels that the iterations alternate between;
+        // this pass zeroes the first iteration's, each shares pass the next one's (docs/caustics.md "Cost").
+        const uint64_t regionBytes = uint64_t(ff.poolTiles) * shader::kFilterGroupThreads * 4;
+        sums = b.write(b.createBuffer("caustics.atrous.sums", rhi::BufferDesc()
+                                                                  .setByteSize((s.atrousIterations > 1 ? 2 : 1) * regionBytes)
+                                                                  .setUsage(rhi::BufferUsage::Storage)
+                                                                  .setDebugName("caustics.atrousSums")),
+                       rg::Access::StorageReadWrite);
         CausticFrame fr = f;
         rg::RgTexture o = radiance;
+        rg::RgBuffer zeroed = sums;
         FilterTiles t = ff.tiles;
         // The second type's guides carry each pixel's photon weight (second_type_guides.h).
         const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u};
@@ -306,15 +298,12 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
                                  .texture("gNormal", ctx.texture(in[4]))
                                  .texture("slotMap", ctx.texture(t.slots))
                                  .buffer("tiles", ctx.buffer(t.list))
-                                 .texture("outColor", ctx.texture(o)),
+                                 .texture("outColor", ctx.texture(o))
+                                 .buffer("weightSums", ctx.buffer(zeroed)),
                              push, t.args);
         };
     });
-
-    if (s.atrousIterations > 0) {
-        rg::RgBuffer sums = addAtrousSumsClear(graph, f, ff);
-        for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, ff, radiance, raw, sums, motionGuides);
-    }
+    for (uint32_t i = 0; i < s.atrousIterations; ++i) addAtrousIteration(graph, f, i, ff, radiance, raw, sums, motionGuides);
     return ff.tiles.args;
 }
 

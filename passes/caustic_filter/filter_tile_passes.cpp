@@ -1,5 +1,5 @@
 // The filter's tile passes and history import (filter_graph.h; docs/caustics.md "Filter", "Tiles",
-// "Memory"): caustics.filterTiles (the view's tile state), .clear, .list (the tile list, each listed
+// "Memory"): caustics.filterTiles (the view's tile state), .list (the tile list, each listed
 // tile's pool tile) and .count (the tiles wanted, read back to size the pool).
 #include <cmath>
 #include <string>
@@ -61,9 +61,9 @@ void addPoolGrowthPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& 
     });
 }
 
-// caustics.filterTiles: this frame's tile state (shaders/tiles.h), then caustics.filterTiles.clear sets the
-// arguments to (0, 1, 1, 0) and caustics.filterTiles.list lists the tiles and gives each a pool tile. Nothing after
-// it runs on an unlisted tile.
+// caustics.filterTiles: this frame's tile state (shaders/tiles.h) and the list's indirect arguments set to
+// (0, 1, 1, 0), then caustics.filterTiles.list lists the tiles and gives each a pool tile. Nothing after it runs
+// on an unlisted tile.
 FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, rg::RgTexture raw,
                           bool historyUsable) {
     const uint32_t w = f.width, h = f.height, tilesX = (w + 7) / 8, tilesY = (h + 7) / 8;
@@ -75,8 +75,13 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
         const GBuffer& g = f.in->gbuffer;
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.objectId), b.read(hist.previousTiles)};
         hist.tiles = b.write(hist.tiles);
+        t.args = b.write(b.createBuffer("caustics.filterTileArgs",
+                                        rhi::BufferDesc().setByteSize(16)
+                                            .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::Indirect | rhi::BufferUsage::CopySource)
+                                            .setDebugName("caustics.filterTileArgs")));
         CausticFrame fr = f;
         rg::RgTexture o = hist.tiles;
+        rg::RgBuffer args = t.args;
         const shader::FilterTilesParams push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory};
         return [=](rg::PassContext& ctx) {
             auto d = PassBindingSet(shader_bindings::kCausticFilterTilesBindings, 0)
@@ -86,24 +91,11 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
                          .texture("gObjectId", ctx.texture(in[2]))
                          .texture("previousTiles", ctx.texture(in[3]))
                          .texture("tileState", ctx.texture(o))
+                         .buffer("tileArgs", ctx.buffer(args))
                          .desc();
             if (!d) log(LogLevel::Error, "caustics.filterTiles: " + d.message());
             else if (bindFilter(ctx, *fr.res, fr.res->filter.tiles, fr.res->filter.tilesLayout, std::move(*d), push))
                 ctx.cmd().dispatch(tilesX, tilesY);   // one group per tile
-        };
-    });
-    graph.addPass(filterPassName(f, "caustics.filterTiles.clear"), [&](rg::PassBuilder& b) {
-        t.args = b.write(b.createBuffer("caustics.filterTileArgs",
-                                        rhi::BufferDesc().setByteSize(16)
-                                            .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::Indirect |
-                                                      rhi::BufferUsage::CopyDest | rhi::BufferUsage::CopySource)
-                                            .setDebugName("caustics.filterTileArgs")),
-                         rg::Access::CopyDest);
-        rg::RgBuffer args = t.args;
-        return [=](rg::PassContext& ctx) {
-            ctx.cmd().fillBuffer(ctx.buffer(args), 0u, 0, 4);
-            ctx.cmd().fillBuffer(ctx.buffer(args), 1u, 4, 8);
-            ctx.cmd().fillBuffer(ctx.buffer(args), 0u, 12, 4);
         };
     });
     graph.addPass(filterPassName(f, "caustics.filterTiles.list"), [&](rg::PassBuilder& b) {

@@ -13,6 +13,7 @@ inline constexpr Binding kCausticVarianceBindingList[] = {
     {"tiles", Kind::StorageBufferRO, 0, 5, "uint"},             // the tile list
     {"outColor", Kind::StorageTexture, 0, 6, "float4", ImageFormat::Rgba16f},   // pool
     {"gNormal", Kind::SampledTexture, 0, 7, "float4"},          // .w: photon weights (VarianceParams)
+    {"weightSums", Kind::StorageBufferRW, 0, 8, "uint"},        // caustics.atrous.sums: zeroes the first region
 };
 
 inline constexpr PassBindings kCausticVarianceBindings{"caustic_variance", "passes/caustic_filter/variance_bindings.h",

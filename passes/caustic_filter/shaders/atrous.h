@@ -5,8 +5,8 @@
 // every source q hands each receiver p of its 5x5 holed neighbourhood the share w(p, q) / W_q of its
 // radiance, W_q = sum_p w(p, q), so a source's shares add up to 1 (docs/caustics.md "Filter",
 // "Spatial"). The weight is symmetric, so each pair's is evaluated once per iteration, by the pixel of
-// the pair that comes first in scan order. Two passes per iteration over the tile list, after one
-// caustics.atrous.clear for all (docs/caustics.md "Cost"):
+// the pair that comes first in scan order. Two passes per iteration over the tile list, the first
+// iteration's weight sums zeroed by caustics.variance (docs/caustics.md "Cost"):
 //   caustics.atrous.N.pairs     w to the 12 later neighbours of every pixel, packed, and added to both
 //                               pixels' W_q (atrous_pairs.comp / .hlsl)
 //   caustics.atrous.N           the shares (atrous.comp / .hlsl into the pool; atrous_last.comp / .hlsl,
@@ -29,7 +29,7 @@ struct AtrousParams {
     float depthJitter;
     // The weight sums W alternate between two regions of caustics.atrous.sums, a pool's texels each:
     // this iteration's first word, and the next iteration's, which this iteration's shares pass zeroes
-    // (kAtrousNoNextSums after the last; caustics.atrous.clear zeroes the first iteration's region).
+    // (kAtrousNoNextSums after the last; caustics.variance zeroes the first iteration's region).
     uint sumsBase;
     uint nextSumsBase;
 };

@@ -64,12 +64,8 @@ uint atrousSlot(int2 q, int2 tile, int2 tap) {
     return sSlots[near.y * 3 + near.x];
 }
 
-// Pixel p's word in a region of caustics.atrous.sums starting at `base`: its pool tile's 64, row by row.
-uint atrousSumIndexIn(uint base, uint slot, int2 p) {
-    return base + slot * kFilterGroupThreads + uint((p.y & (kFilterTileSize - 1)) * kFilterTileSize + (p.x & (kFilterTileSize - 1)));
-}
-// ... in this iteration's region.
-uint atrousSumIndex(uint slot, int2 p) { return atrousSumIndexIn(params.sumsBase, slot, p); }
+// Pixel p's word in this iteration's region of caustics.atrous.sums.
+uint atrousSumIndex(uint slot, int2 p) { return filterPoolWord(params.sumsBase, slot, p); }
 
 bool atrousIsDark(float4 c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f && c.w == 0.0f; }
 
@@ -157,7 +153,7 @@ void atrousThread(uint group, uint local) {
 #if !defined(kAtrousLast)
     // The next iteration's pairs pass adds into that word; every texel this pass reads W from is a listed
     // pixel in the view, so every one of those is zeroed here (iteration i - 1 read it last pass).
-    weightSumsStore(atrousSumIndexIn(params.nextSumsBase, group, p), 0u);
+    weightSumsStore(filterPoolWord(params.nextSumsBase, group, p), 0u);
 #endif
     // A pixel without a surface (id 0) has no pair and no pair names it, so its W is the centre tap's and
     // it keeps its colour through the same sum: no guide fetch here.

@@ -28,6 +28,12 @@ CAUSTICS_FN int2 filterPoolTexel(uint slot, int2 p) {
     return int2(tile.x << kFilterTileShift, tile.y << kFilterTileShift) + local;
 }
 // p inside a width x height view: a negative coordinate wraps to a large unsigned one.
+// Pixel p's word in a per-pool-texel buffer region starting at `base` (caustics.atrous.sums): its pool
+// tile's kFilterGroupThreads words, row by row.
+CAUSTICS_FN uint filterPoolWord(uint base, uint slot, int2 p) {
+    return base + slot * kFilterGroupThreads + uint((p.y & (kFilterTileSize - 1)) * kFilterTileSize + (p.x & (kFilterTileSize - 1)));
+}
+
 CAUSTICS_FN bool filterInside(int2 p, int width, int height) { return uint(p.x) < uint(width) && uint(p.y) < uint(height); }
 
 // The scalar whose moments and differences guide the filter (SVGF section 4.2): common/luminance.h.

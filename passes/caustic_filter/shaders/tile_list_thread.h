@@ -6,14 +6,8 @@
 #include "common/resources.h"
 #if defined(CAUSTICS_LANG_HLSL)
 #define TILE_STATE_LOAD(t) tileState[(t)]
-uint tileArgsAdd(uint i) {
-    uint before;
-    tileArgs.InterlockedAdd(4u * i, 1u, before);
-    return before;
-}
 #else
 #define TILE_STATE_LOAD(t) imageLoad(tileState, (t)).r
-uint tileArgsAdd(uint i) { return atomicAdd(tileArgs[i], 1u); }
 #endif
 
 void tileListThread(uint2 id) {
@@ -29,10 +23,10 @@ void tileListThread(uint2 id) {
         }
     uint slot = kFilterNoSlot;
     if (listed) {
-        uint wanted = tileArgsAdd(3u);
+        uint wanted = tileArgsAtomicAdd(3u, 1u);
         if (wanted < params.capacity) {
             slot = wanted;
-            tileArgsAdd(0u);
+            tileArgsAtomicAdd(0u, 1u);
             tilesStore(slot, uint(t.x) | (uint(t.y) << 16));
             if (state == 0u) CAUSTICS_IMAGE_STORE_UINT(tileState, t, 1u);
         }

@@ -11,7 +11,8 @@
 //    (written this frame) is kept for the next frame's reprojection, then it drops out unless listed
 //    again. Only bit 31 of a neighbour's state is read, and no write changes it, so the neighbours'
 //    writes race harmlessly. A listed tile takes the next pool tile while the pool has room: tileArgs =
-//    (tiles listed and given a pool tile, 1, 1, tiles that wanted one), cleared to (0, 1, 1, 0) before.
+//    (tiles listed and given a pool tile, 1, 1, tiles that wanted one), set to (0, 1, 1, 0) by the first
+//    group of caustics.filterTiles.
 //    A tile past the capacity keeps no slot: the filter skips it (its pixels show this frame's
 //    unfiltered radiance) and the host grows the pool for the next frames.
 #include "filter_common.h"

@@ -48,6 +48,9 @@ void filterTilesThread(uint2 group, uint2 pixel, uint local) {
     }
     FILTER_BARRIER();
     if (local == 0u) CAUSTICS_IMAGE_STORE_UINT(tileState, int2(group), filterTileState(sPhotons != 0u, sCarried, params.keepFrames));
+    // The list pass's indirect arguments start at (0 listed, 1, 1, 0 wanted): set here, not by a transfer
+    // pass of their own (docs/caustics.md "Tiles").
+    if (group.x == 0u && group.y == 0u && local < 4u) tileArgsStore(local, local == 1u || local == 2u ? 1u : 0u);
 }
 
 #endif  // CAUSTICS_PASS_CAUSTIC_FILTER_TILES_THREAD_H

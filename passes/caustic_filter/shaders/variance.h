@@ -15,7 +15,9 @@
 // took (docs/caustics.md "Second-type guides").
 // Output (pool, pre-exposed): rgb the mean, alpha the standard deviation of the accumulated mean,
 // sqrt(per-frame variance / n). Over the listed tiles; a neighbour in a tile without a pool tile counts
-// as zero in the 3x3 means. Entries: variance.comp, variance.hlsl.
+// as zero in the 3x3 means. The a-trous iterations follow it (it runs only for them): it also zeroes
+// each pixel's word of their first weight-sum region (caustics.atrous.sums, atrous.h), which the first
+// pairs pass adds into, so that region needs no clear pass of its own. Entries: variance.comp, variance.hlsl.
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
@@ -102,6 +104,8 @@ float varianceShotNoise(int2 p, uint id, float accumulatedLuminance) {
 void varianceThread(uint group, uint2 local) {
     int2 p = filterTileOf(tilesLoad(group)) * kFilterTileSize + int2(local);
     if (!filterInside(p, params.width, params.height)) return;
+    // Every word the first pairs pass adds into or its shares pass reads is a listed pixel's in the view.
+    weightSumsStore(filterPoolWord(0u, group, p), 0u);
     int2 own = filterPoolTexel(group, p);
     float4 c = CAUSTICS_TEXEL(temporalColor, own);
     float n = max(varianceHistoryLength(own), 1.0f);
