@@ -52,6 +52,20 @@ CAUSTICS_FN BrdfMaterial lambertOnlyBrdfMaterial(float3 baseColor) {
 CAUSTICS_FN float gltfDielectricF0(float specular, float ior) { return specular * dielectricF0(ior); }
 
 // f_r(wi, wo) in 1/sr, the formula at the top of this file.
+// The diffuse term's weight (the first line of the formula above, without baseColor) at |wo.h| = vh.
+CAUSTICS_FN float gltfDiffuseWeight(BrdfMaterial m, float vh) {
+    float fresnelDiffuse = m.dielectricF0 > 0.0f ? fresnelSchlick(splat3(m.dielectricF0), vh).x : 0.0f;
+    return (1.0f - m.metallic) * (1.0f - m.transmission) * (1.0f - fresnelDiffuse) * kInvPi;
+}
+
+// The diffuse term alone: a specular material's diffuse base lit directly where a view reaches it
+// through glass or in a mirror (passes/direct_lighting; its GGX highlight, a one-pixel spike at
+// specular roughness, is left out there). f_r in 1/sr.
+CAUSTICS_FN float3 evalGltfDiffuse(BrdfMaterial m, float3 n, float3 wi, float3 wo) {
+    if (dot(n, wi) <= 0.0f || dot(n, wo) <= 0.0f) return splat3(0.0f);
+    return m.baseColor * gltfDiffuseWeight(m, saturate(dot(wo, normalize(wi + wo))));
+}
+
 CAUSTICS_FN float3 evalGltfBrdf(BrdfMaterial m, float3 n, float3 wi, float3 wo) {
     float nl = dot(n, wi);
     float nv = dot(n, wo);
@@ -66,9 +80,7 @@ CAUSTICS_FN float3 evalGltfBrdf(BrdfMaterial m, float3 n, float3 wi, float3 wo) 
     // otherwise invent one). The forward trace uses it for the diffuse base of a specular material,
     // whose layer weights were already applied when the event picked that lobe.
     if (max(f0.x, max(f0.y, f0.z)) <= 0.0f) return m.baseColor * ((1.0f - m.transmission) * kInvPi);
-    float fresnelDiffuse = m.dielectricF0 > 0.0f ? fresnelSchlick(splat3(m.dielectricF0), vh).x : 0.0f;
-    float diffuseWeight = (1.0f - m.metallic) * (1.0f - m.transmission) * (1.0f - fresnelDiffuse) * kInvPi;
-    return m.baseColor * diffuseWeight + fresnelSchlick(f0, vh) * specular;
+    return m.baseColor * gltfDiffuseWeight(m, vh) + fresnelSchlick(f0, vh) * specular;
 }
 
 // The receiver BRDF of a glTF core material (IOR 1.5, specular 1, no transmission): what a caustic

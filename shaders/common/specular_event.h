@@ -6,7 +6,8 @@
 //   dielectric (probability 1 - metallic):  reflect with probability F (exact Fresnel), weight 1;
 //                                           else refract with probability transmission, weight
 //                                           baseColor; else the diffuse base layer (kind Diffuse:
-//                                           the caller ends the specular chain there).
+//                                           the caller ends the specular chain there; weight 1 for
+//                                           photons, 1 / its chance for camera paths, below).
 //   thin wall (KHR_materials_volume absent): as a dielectric with F the pane's 2R/(1+R), both faces
 //                                           and their inner reflections summed; it does not bend.
 // Each lobe is picked with its physical probability, so Fresnel cancels out of the weights
@@ -173,8 +174,12 @@ CAUSTICS_FN SpecularEvent sampleSpecularEventOnFacet(SpecularFacet s, float3 d, 
         } else {
             pick = (pick - s.f) / max(1.0f - s.f, 1.0e-7f);
             if (pick >= mat.transmission) {
+                // The diffuse base. A photon leaves its flux there (weight unused); the photons that
+                // picked the base carry its chance already, so a camera path that picks it shows that
+                // photon radiance at weight 1 / chance: as the first type shows the base seen directly
+                // (docs/physics.md "A diffuse base behind glass").
                 ev.kind = kEventDiffuse;
-                ev.weight = splat3(1.0f);
+                ev.weight = splat3(transportMode == kTransportRadiance ? 1.0f / max(pDiffuse, 1.0e-7f) : 1.0f);
                 ev.insideMedium = !s.entering && !mat.thinWalled;
                 ev.mostLikely = pDiffuse >= pMost;
                 return ev;

@@ -46,16 +46,17 @@ LightArrival arrival(const scene::Light& light, const glm::vec3& p) {
     return {toLight, d, color * falloff};
 }
 
-// Sum over lights of f_r E cos V at a surface point (n faces the viewer, v towards the viewer).
+// Sum over lights of f_r E cos V at a surface point (n faces the viewer, v towards the viewer); diffuseOnly:
+// the BRDF's diffuse term alone (sh::evalGltfDiffuse).
 glm::vec3 shadeDirect(const ViewContext& ctx, const glm::vec3& x, const glm::vec3& n, const glm::vec3& v,
-                      const sh::BrdfMaterial& brdf) {
+                      const sh::BrdfMaterial& brdf, bool diffuseOnly) {
     glm::vec3 sum(0.0f);
     float eps = rayEpsilon(x);
     for (const scene::Light& light : ctx.scene.lights) {
         LightArrival a = arrival(light, x);
         float cosL = glm::dot(n, a.toLight);
         if (cosL <= 0.0f) continue;
-        glm::vec3 f = sh::evalGltfBrdf(brdf, n, a.toLight, v);
+        glm::vec3 f = diffuseOnly ? sh::evalGltfDiffuse(brdf, n, a.toLight, v) : sh::evalGltfBrdf(brdf, n, a.toLight, v);
         if (sh::maxComponent(f) <= 0.0f) continue;
         if (ctx.world.bvh->occluded(x + n * eps, a.toLight, 0.0f, std::max(a.distance - 2.0f * eps, 0.0f))) continue;
         sum += f * a.irradiance * cosL;
@@ -74,9 +75,10 @@ glm::vec3 traceView(const ViewContext& ctx, const glm::vec3& origin, const glm::
     glm::vec3 facing = glm::dot(ns, dir) < 0.0f ? ns : -ns;
     sh::BrdfMaterial brdf = sh::makeBrdfMaterial(albedo, mat.metallic, mat.roughness, mat.transmission,
                                                  sh::gltfDielectricF0(mat.specular, mat.ior));
-    // A specular surface shows its own highlight only when the camera sees it directly (as on the GPU).
-    glm::vec3 radiance(0.0f);
-    if (!mat.isSpecular() || events == 0) radiance = weight * shadeDirect(ctx, x, facing, -dir, brdf);
+    // A specular surface shows its own highlight only when the camera sees it directly (as on the GPU);
+    // seen through glass or in a mirror, its diffuse base's direct light alone.
+    const bool highlight = !mat.isSpecular() || events == 0;
+    glm::vec3 radiance = weight * shadeDirect(ctx, x, facing, -dir, brdf, !highlight);
     if (!mat.isSpecular() || events >= ctx.options.maxSpecularEvents) return radiance;
 
     bool entering = glm::dot(dir, ng) < 0.0f;

@@ -228,7 +228,7 @@ void backwardLaunch(uint launch, uint launchCount) {
                     if (ev.kind == kEventAbsorbed) ended = true;
                     else if (ev.kind != kEventDiffuse) backwardScatter(b, ev, h, hit, x, ng, scale);
                     else {
-                        b.throughput *= scale;
+                        b.throughput *= ev.weight * scale;   // the diffuse base: 1 / its chance (common/specular_event.h)
                         b.likelyPath = b.likelyPath && ev.mostLikely;
                         sphere = true;
                     }

@@ -77,23 +77,26 @@ float shadowVisibility(float3 p, float3 n, float3 toLight, float distance) {
 // Outgoing radiance towards v of a surface point lit by every scene light: sum of
 // f_r(l, v) E_l cos(theta_l) V_l with the one glTF BRDF of shaders/common/bsdf.h (docs/physics.md,
 // "One BSDF"), the same one the caustic splat and gather evaluate.
-float3 shadeDirect(float3 p, float3 n, float3 v, BrdfMaterial brdf) {
+// diffuseOnly: the BRDF's diffuse term alone (evalGltfDiffuse: a specular material's base seen through glass).
+float3 shadeDirectBrdf(float3 p, float3 n, float3 v, BrdfMaterial brdf, bool diffuseOnly) {
     float3 result = splat3(0.0f);
     uint count = sceneLightCount();
     for (uint i = 0u; i < count; ++i) {
         LightSample s = sampleLight(sceneLight(i), p);
         float nl = dot(n, s.toLight);
         if (nl <= 0.0f || max(s.irradiance.r, max(s.irradiance.g, s.irradiance.b)) <= 0.0f) continue;
-        float3 f = evalGltfBrdf(brdf, n, s.toLight, v);
+        float3 f = diffuseOnly ? evalGltfDiffuse(brdf, n, s.toLight, v) : evalGltfBrdf(brdf, n, s.toLight, v);
         if (max(f.r, max(f.g, f.b)) <= 0.0f) continue;
         result += f * s.irradiance * (nl * shadowVisibility(p, n, s.toLight, s.distance));
     }
     return result;
 }
 
-float3 shadeMaterial(float3 p, float3 n, float3 v, float3 albedo, GpuMaterial m) {
-    return shadeDirect(p, n, v, makeBrdfMaterial(albedo, m.metallic, m.roughness, m.transmission,
-                                                 gltfDielectricF0(m.specular, m.ior)));
+float3 shadeDirect(float3 p, float3 n, float3 v, BrdfMaterial brdf) { return shadeDirectBrdf(p, n, v, brdf, false); }
+
+float3 shadeMaterial(float3 p, float3 n, float3 v, float3 albedo, GpuMaterial m, bool diffuseOnly) {
+    return shadeDirectBrdf(p, n, v, makeBrdfMaterial(albedo, m.metallic, m.roughness, m.transmission,
+                                                     gltfDielectricF0(m.specular, m.ior)), diffuseOnly);
 }
 
 struct ChainBranch {
@@ -146,12 +149,15 @@ float3 traceSpecularChain(float3 p, float3 n, float3 d, GpuMaterial m, float3 al
             if (hit) {
                 float3 ns = h.shadingNormal;
                 if (dot(ns, b.direction) > 0.0f) ns = -ns;   // face the incoming ray
-                // Diffuse: its direct light ends the branch. Specular: scatter on. (A point light's
-                // highlight on a specular surface seen through another is left out: at the clamped
-                // roughness it is a one-pixel spike, and the primary surface shows its own.)
+                // Diffuse: its direct light ends the branch. Specular: its diffuse base's direct light
+                // (zero for full metal or glass; the primary surface shows its own through the whole
+                // BRDF), then scatter on. (A point light's highlight on a specular surface seen through
+                // another is left out: at the clamped roughness it is a one-pixel spike, and the primary
+                // surface shows its own.)
                 if (!sceneMaterialIsSpecular(h.material)) {
-                    radiance += b.weight * shadeMaterial(h.position, ns, -b.direction, h.baseColor, h.material);
+                    radiance += b.weight * shadeMaterial(h.position, ns, -b.direction, h.baseColor, h.material, false);
                 } else {
+                    radiance += b.weight * shadeMaterial(h.position, ns, -b.direction, h.baseColor, h.material, true);
                     p = h.position;
                     n = ns;
                     d = b.direction;

@@ -55,11 +55,11 @@ inline scene::Camera ballFromAboveCamera() {
 
 // A glass ball (R 0.5, centre 0.8 m up) under light from the upper -x side: the caustic lands beside
 // the ball around x = 0.48, where a camera on the +x side sees it directly.
-inline scene::Scene sideCausticScene() {
+inline scene::Scene sideCausticScene(float planeHalfSize = 3.0f) {
     scene::AnalyticSceneDesc d;
     d.radius = 0.5f;
     d.height = 0.8f;
-    d.planeHalfSize = 3.0f;
+    d.planeHalfSize = planeHalfSize;
     d.tessellation = 96;
     d.lightDirection = glm::normalize(glm::vec3(0.6f, -1.0f, 0.0f));
     return scene::makeGlassSphereScene(d);
