@@ -87,6 +87,28 @@ TEST_F(SecondType, GlassBallSeenFromAboveMatchesTheCpuHistogramEstimate) {
     EXPECT_TRUE(found) << "no GPU fold ring near radius " << fold << " px";
 }
 
+// The floor (object 1) as the second type shows it through the plate of `plated` over the first type
+// seen directly in `direct` (no plate), summed over the pixels that see the floor in `direct`, the
+// means of `frames` frames each; 0 (and a test failure) when a run fails or the floor got no light.
+double throughPlateOverDirect(rhi::IDevice& device, const scene::Scene& direct, const scene::Scene& plated,
+                              const scene::Camera& cam, uint32_t size, const CausticsSettings& s, uint32_t frames,
+                              uint32_t& pixels) {
+    auto a = averagedRun(device, direct, cam, size, s, frames);
+    auto b = averagedRun(device, plated, cam, size, s, frames);
+    EXPECT_TRUE(a && b) << (a ? b.message() : a.message());
+    if (!a || !b) return 0.0;
+    double seenDirectly = 0.0, seenThroughPlate = 0.0;
+    pixels = 0;
+    for (size_t i = 0; i < size_t(size) * size; ++i) {
+        if (a.value().objectId[i] != 1u) continue;  // the floor, seen directly without the plate
+        seenDirectly += luminance(a.value().firstType[i]);
+        seenThroughPlate += luminance(b.value().secondType[i]);
+        ++pixels;
+    }
+    EXPECT_GT(seenDirectly, 0.0);
+    return seenDirectly > 0.0 ? seenThroughPlate / seenDirectly : 0.0;
+}
+
 // The ball's caustic seen through a 1 cm glass plate that fills the view, against the same caustic
 // seen directly (first type, no plate): a camera path through a slab carries the slab transmittance
 // (1 - R) / (1 + R) with R = ((n-1)/(n+1))^2 (Born & Wolf 1.6; 0.9231 at n = 1.5, near-normal view),
@@ -102,21 +124,8 @@ void expectPlateFactor(rhi::IDevice& device, float ior, double expected, double 
     scene::Scene direct = sideCausticScene();
     scene::Scene plated = sideCausticScene();
     addPlateInFrontOfCamera(plated, cam, ior, thickness);
-    CausticsSettings s = secondTypeSettings(256, 8.0f);
-    auto a = averagedRun(device, direct, cam, kSize, s, frames);
-    ASSERT_TRUE(a) << a.message();
-    auto b = averagedRun(device, plated, cam, kSize, s, frames);
-    ASSERT_TRUE(b) << b.message();
-    double seenDirectly = 0.0, seenThroughPlate = 0.0;
     uint32_t pixels = 0;
-    for (size_t i = 0; i < size_t(kSize) * kSize; ++i) {
-        if (a.value().objectId[i] != 1u) continue;  // the floor, seen directly without the plate
-        seenDirectly += luminance(a.value().firstType[i]);
-        seenThroughPlate += luminance(b.value().secondType[i]);
-        ++pixels;
-    }
-    ASSERT_GT(seenDirectly, 0.0);
-    double ratio = seenThroughPlate / seenDirectly;
+    const double ratio = throughPlateOverDirect(device, direct, plated, cam, kSize, secondTypeSettings(256, 8.0f), frames, pixels);
     std::printf("[ measured ] plate IOR %.2f, %.0f mm (0: thin-walled): through plate / direct %.4f (expected %.4f) over %u pixels\n",
                 ior, 1000.0f * thickness, ratio, expected, pixels);
     EXPECT_NEAR(ratio, expected, tolerance * expected);
@@ -169,20 +178,8 @@ void expectDiffuseBaseUnchangedByIndexMatchedPlate(rhi::IDevice& device, float t
     addPlateInFrontOfCamera(plated, cam, 1.0f);
     CausticsSettings s = secondTypeSettings(256, 8.0f);
     s.secondTypeSplitLobes = splitLobes;
-    auto a = averagedRun(device, direct, cam, kSize, s, frames);
-    ASSERT_TRUE(a) << a.message();
-    auto b = averagedRun(device, plated, cam, kSize, s, frames);
-    ASSERT_TRUE(b) << b.message();
-    double seenDirectly = 0.0, seenThroughPlate = 0.0;
     uint32_t pixels = 0;
-    for (size_t i = 0; i < size_t(kSize) * kSize; ++i) {
-        if (a.value().objectId[i] != 1u) continue;  // the floor, seen directly without the plate
-        seenDirectly += luminance(a.value().firstType[i]);
-        seenThroughPlate += luminance(b.value().secondType[i]);
-        ++pixels;
-    }
-    ASSERT_GT(seenDirectly, 0.0);
-    const double ratio = seenThroughPlate / seenDirectly;
+    const double ratio = throughPlateOverDirect(device, direct, plated, cam, kSize, s, frames, pixels);
     std::printf("[ measured ] floor transmission %.2f metallic %.2f, lobes %s: through an index-matched plate / direct %.4f over %u pixels\n",
                 transmission, metallic, splitLobes ? "split" : "sampled", ratio, pixels);
     EXPECT_NEAR(ratio, 1.0, 0.05);
