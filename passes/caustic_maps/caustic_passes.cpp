@@ -247,13 +247,20 @@ std::vector<std::string> causticStatsWarnings(std::span<const uint32_t> stats, c
                            "too high for this light; lower it (docs/caustics.md, \"Fixed point\")");
     }
     if (stats.size() > kStatSphereCapacity) {
-        // The specular pixel list is cut at the capacity, so pixels past it get no sphere; spheres past it
-        // (none while one launch makes at most one) would be counted in kStatSpheresDropped.
+        // The specular pixel list is cut at the capacity, so pixels past it get no sphere. A listed pixel's
+        // launch appends up to kMaxSpheresPerPixel (its lobe branches): those past the capacity are
+        // dropped and counted in kStatSpheresDropped. Pixels and spheres are told apart.
         const uint32_t specular = stats[kStatSpecularPixels], capacity = stats[kStatSphereCapacity];
-        const uint32_t dropped = stats[kStatSpheresDropped] + (specular > capacity ? specular - capacity : 0u);
+        const uint32_t unlisted = specular > capacity ? specular - capacity : 0u, dropped = stats[kStatSpheresDropped];
+        std::string lost;
+        if (unlisted > 0)
+            lost = std::to_string(unlisted) + " of " + std::to_string(specular) +
+                   " specular pixels got no second-type sphere this frame";
         if (dropped > 0)
-            warnings.push_back(std::to_string(dropped) + " of " + std::to_string(specular) +
-                               " specular pixels got no second-type sphere this frame, the sphere structures grow "
+            lost += (lost.empty() ? "" : ", and ") + std::to_string(dropped) +
+                    " second-type spheres of the others' lobe branches were dropped this frame";
+        if (!lost.empty())
+            warnings.push_back(lost + ", the sphere structures grow "
                                "next frame: they held " + std::to_string(capacity) +
                                " (sized from the specular pixel count of the last frame in the same "
                                "frame-in-flight slot, or the specular surfaces in view; docs/caustics.md, "

@@ -119,15 +119,20 @@ TEST_F(SecondTypeCost, UndersizedCapacityDropsAndWarnsThenTheNextFrameRecovers) 
     std::printf("[ measured ] undersized frame: %u specular pixels, capacity %u, %u spheres\n", specular, capacity,
                 st[kStatSpheres]);
     ASSERT_LT(capacity, specular);
-    // The specular pixel list is cut at the capacity, so every listed pixel finds its sphere slot.
-    EXPECT_LE(st[kStatSpheres], capacity);
-    EXPECT_EQ(st[kStatSpheresDropped], 0u);
-    EXPECT_EQ(dropped->spheres.size(), st[kStatSpheres]);
+    // The specular pixel list is cut at the capacity: `capacity` pixels launch. Each appends up to
+    // kMaxSpheresPerPixel spheres (its lobe branches), and which pixels make the list depends on the
+    // GPU's order of appends (on the H200 92-116 spheres over 14 runs, 0-4 dropped): every sphere counted
+    // either holds a slot or is counted dropped, and the warning tells unlisted pixels from dropped spheres.
+    EXPECT_LE(st[kStatSpheres], kMaxSpheresPerPixel * capacity);
+    EXPECT_EQ(st[kStatSpheresDropped], st[kStatSpheres] > capacity ? st[kStatSpheres] - capacity : 0u);
+    EXPECT_EQ(dropped->spheres.size(), std::min(st[kStatSpheres], capacity));
     const std::vector<std::string> warnings = causticStatsWarnings(st, s);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find(std::to_string(specular - capacity) + " of " + std::to_string(specular) +
                                " specular pixels got no second-type sphere this frame"),
               std::string::npos) << warnings[0];
+    EXPECT_EQ(warnings[0].find("spheres of the others' lobe branches were dropped") != std::string::npos,
+              st[kStatSpheresDropped] > 0) << warnings[0];
 
     const std::vector<scene::Camera> recovering = {farCamera(), obliqueCamera(), obliqueCamera()};
     const std::vector<scene::Camera> reference = {obliqueCamera(), obliqueCamera(), obliqueCamera()};
