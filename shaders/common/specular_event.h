@@ -104,10 +104,6 @@ CAUSTICS_FN SpecularLobeChances specularLobeChancesAt(SpecularFacet s, OpticalMa
     return c;
 }
 
-CAUSTICS_FN SpecularLobeChances specularLobeChances(float3 d, float3 n, OpticalMaterial mat, float2 u) {
-    return specularLobeChancesAt(specularFacet(d, n, mat, u), mat);
-}
-
 // Lobe `lobe`'s interval of the u.z that sampleSpecularEvent picks lobes with (0 metal, 1 reflection,
 // 2 refraction, 3 diffuse; SpecularLobeChances order): its start and its width, the lobe's chance.
 CAUSTICS_FN float2 specularLobeInterval(SpecularLobeChances c, uint lobe) {

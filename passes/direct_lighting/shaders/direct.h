@@ -92,8 +92,6 @@ float3 shadeDirectBrdf(float3 p, float3 n, float3 v, BrdfMaterial brdf, bool dif
     return result;
 }
 
-float3 shadeDirect(float3 p, float3 n, float3 v, BrdfMaterial brdf) { return shadeDirectBrdf(p, n, v, brdf, false); }
-
 float3 shadeMaterial(float3 p, float3 n, float3 v, float3 albedo, GpuMaterial m, bool diffuseOnly) {
     return shadeDirectBrdf(p, n, v, makeBrdfMaterial(albedo, m.metallic, m.roughness, m.transmission,
                                                      gltfDielectricF0(m.specular, m.ior)), diffuseOnly);
@@ -192,8 +190,8 @@ void directThread(int2 pixel) {
     GpuMaterial m = sceneMaterial(sceneInstance(objectId - 1u).material);
 
     // The G-buffer's albedo/metallic/roughness win over the material table (a host G-buffer may differ).
-    float3 radiance = shadeDirect(p, n, v, makeBrdfMaterial(am.rgb, am.a, nr.w, m.transmission,
-                                                            gltfDielectricF0(m.specular, m.ior)));
+    float3 radiance = shadeDirectBrdf(p, n, v, makeBrdfMaterial(am.rgb, am.a, nr.w, m.transmission,
+                                                                gltfDielectricF0(m.specular, m.ior)), false);
     if (sceneMaterialIsSpecular(m)) radiance += traceSpecularChain(p, n, -v, m, am.rgb, true);
     CAUSTICS_IMAGE_STORE(outRadiance, pixel, float4(radiance, 1.0f));
 }

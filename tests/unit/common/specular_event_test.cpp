@@ -147,21 +147,3 @@ TEST(SpecularEvent, LobeIntervalsPickTheirOwnLobeAndOutsidePicksAnother) {
     }
     EXPECT_EQ(sh::specularMostLikelyLobe(c), c.refract >= c.diffuse ? 2u : 3u);
 }
-
-// The facet split out of sampleSpecularEvent changes nothing: the same numbers give the same event.
-TEST(SpecularEvent, SamplingOnAComputedFacetEqualsSamplingFromScratch) {
-    sh::Rng rng = sh::rngCreate(7, 0, 0, 0);
-    sh::OpticalMaterial m = glass(0.4f);
-    m.transmission = 0.7f;
-    for (int i = 0; i < 1000; ++i) {
-        const glm::vec3 u = sh::rngNextFloat3(rng);
-        const glm::vec3 d = glm::normalize(glm::vec3(u.x - 0.5f, u.y - 0.5f, i % 2 ? -1.0f : 1.0f));
-        const sh::SpecularEvent a = sh::sampleSpecularEvent(d, kUp, m, u, sh::kTransportRadiance);
-        const sh::SpecularEvent b =
-            sh::sampleSpecularEventOnFacet(sh::specularFacet(d, kUp, m, glm::vec2(u.x, u.y)), d, m, u.z, sh::kTransportRadiance);
-        EXPECT_EQ(a.kind, b.kind);
-        EXPECT_EQ(a.direction, b.direction);
-        EXPECT_EQ(a.weight, b.weight);
-        EXPECT_EQ(a.mostLikely, b.mostLikely);
-    }
-}
