@@ -65,8 +65,6 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         };
     });
 
-    addSecondTypeGuidePasses(graph, f);
-
     f.sphereBlas = graph.importAccelStruct("caustics.sphereBlas", res.sphereBlas, rhi::ResourceState::AccelStructRead,
                                            rhi::ResourceState::AccelStructRead);
     f.sphereTlas = graph.importAccelStruct("caustics.sphereTlas", res.sphereTlas, rhi::ResourceState::AccelStructRead,

@@ -5,13 +5,12 @@
 namespace caustics::shader_bindings {
 
 inline constexpr Binding kSecondTypeGuideFillBindingList[] = {
-    {"sphereDepthMotion", Kind::SampledTexture, 0, 0, "float4"},   // written from the spheres
-    {"sphereNormal", Kind::SampledTexture, 0, 1, "float4"},
-    {"sphereObjectId", Kind::SampledTexture, 0, 2, "uint"},
-    {"cameraObjectId", Kind::SampledTexture, 0, 3, "uint"},        // the camera G-buffer's
-    {"depthMotion", Kind::StorageTexture, 0, 4, "float4", ImageFormat::Rgba32f},
-    {"normal", Kind::StorageTexture, 0, 5, "float4", ImageFormat::Rgba16f},
-    {"objectId", Kind::StorageTexture, 0, 6, "uint", ImageFormat::R32ui},
+    {"sphereObjectId", Kind::SampledTexture, 0, 0, "uint"},   // written from the spheres (0: no sphere)
+    {"cameraObjectId", Kind::SampledTexture, 0, 1, "uint"},   // the camera G-buffer's
+    // Written from the spheres where sphereObjectId is set, completed here in place.
+    {"depthMotion", Kind::StorageTexture, 0, 2, "float4", ImageFormat::Rgba16f},
+    {"normal", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba16f},
+    {"objectId", Kind::StorageTexture, 0, 4, "uint", ImageFormat::R32ui},
 };
 
 inline constexpr PassBindings kSecondTypeGuideFillBindings{"second_type_guide_fill",

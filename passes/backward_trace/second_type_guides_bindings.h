@@ -8,9 +8,9 @@ inline constexpr Binding kSecondTypeGuidesBindingList[] = {
     {"camera", Kind::ConstantBuffer, 0, 0, "CameraConstants"},                     // caustics.camera (common/camera.h)
     {"spheres", Kind::StorageBufferRO, 0, 1, "CausticSphere", ImageFormat::None, 64},   // caustics.spheres (common/caustic_hit.h)
     {"counters", Kind::StorageBufferRO, 0, 2, "uint"},                           // caustics.stats
-    {"depthMotion", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba32f},
+    {"depthMotion", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba16f},
     {"normal", Kind::StorageTexture, 0, 4, "float4", ImageFormat::Rgba16f},
-    {"objectId", Kind::StorageTexture, 0, 5, "uint", ImageFormat::R32ui},
+    {"sphereObjectId", Kind::StorageTexture, 0, 5, "uint", ImageFormat::R32ui},
     {"gLinearDepth", Kind::SampledTexture, 0, 6, "float4"},      // the camera G-buffer's (the glass)
     {"gObjectId", Kind::SampledTexture, 0, 7, "uint"},
     {"instanceMotion", Kind::StorageBufferRO, 0, 8, "float4"},   // 3 rows per instance (common/caster_motion.h)

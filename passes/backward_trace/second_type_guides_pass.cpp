@@ -1,8 +1,10 @@
 // caustics.secondTypeGuides.clear, caustics.secondTypeGuides and caustics.secondTypeGuides.fill: the
 // second type's own filter guides (passes/backward_trace/shaders/second_type_guides.h and
 // second_type_guide_fill.h; docs/caustics.md "Second-type guides"), written from this frame's spheres
-// (caustics.backward), then filled where a pixel's sample made none, so that the filter can run the
-// second type on the receiver seen through the glass instead of on the glass the camera G-buffer holds.
+// (caustics.backward), then filled in place where a pixel's sample made none, so that the filter can run
+// the second type on the receiver seen through the glass instead of on the glass the camera G-buffer
+// holds. Declared after the resolve (caustic_filter_pass.cpp): the guides then do not share the frame's
+// peak with the stored hits and the radiance buffers.
 #include <string>
 
 #include "backward_trace/second_type_guide_fill_bindings.h"
@@ -16,22 +18,22 @@
 namespace caustics {
 namespace {
 
-// The three guide textures, created and written by the pass being built: <prefix>DepthMotion, Normal, ObjectId.
-SecondTypeGuides createGuides(rg::PassBuilder& b, uint32_t w, uint32_t h, const std::string& prefix) {
-    auto make = [&](const char* suffix, rhi::Format format) {
-        const std::string name = prefix + suffix;
-        return b.write(b.createTexture(name, rhi::TextureDesc().setSize(w, h).setFormat(format)
-                                                 .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage |
-                                                           rhi::TextureUsage::CopySource)
-                                                 .setDebugName(name)));
-    };
-    return {make("DepthMotion", rhi::Format::RGBA32_FLOAT), make("Normal", rhi::Format::RGBA16_FLOAT),
-            make("ObjectId", rhi::Format::R32_UINT)};
+rg::RgTexture createGuide(rg::PassBuilder& b, uint32_t w, uint32_t h, const std::string& name, rhi::Format format) {
+    return b.write(b.createTexture(name, rhi::TextureDesc().setSize(w, h).setFormat(format)
+                                             .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage |
+                                                       rhi::TextureUsage::CopySource)
+                                             .setDebugName(name)));
 }
+
+// What the sphere pass writes: depth and motion, normal and photon weight (both half precision), and
+// the pixel's receiver id in sphereObjectId (0: no sphere), which the fill reads.
+struct SphereGuides {
+    rg::RgTexture depthMotion, normal, sphereObjectId;
+};
 
 // One dispatch of the guide pipeline over the image grid (clear: per pixel; else per sphere slot).
 // cameraDepth, cameraIds: the camera G-buffer's linear depth and object ids (the glass at the pixel).
-void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SecondTypeGuides& g, rg::RgTexture cameraDepth,
+void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SphereGuides& g, rg::RgTexture cameraDepth,
                   rg::RgTexture cameraIds, bool clear) {
     CausticResources::Impl& r = *h.res;
     PassBindingSet set(shader_bindings::kSecondTypeGuidesBindings, 0);
@@ -40,7 +42,7 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SecondTypeG
         .buffer("counters", ctx.buffer(h.stats))
         .texture("depthMotion", ctx.texture(g.depthMotion))
         .texture("normal", ctx.texture(g.normal))
-        .texture("objectId", ctx.texture(g.objectId))
+        .texture("sphereObjectId", ctx.texture(g.sphereObjectId))
         .texture("gLinearDepth", ctx.texture(cameraDepth))
         .texture("gObjectId", ctx.texture(cameraIds))
         .buffer("instanceMotion", ctx.buffer(h.instanceMotionRows));
@@ -55,24 +57,24 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SecondTypeG
     cmd.dispatch((h.width + 7) / 8, (h.height + 7) / 8, 1);
 }
 
-// caustics.secondTypeGuides.fill: the sphere-written guides, with holes filled from a neighbour.
-void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SecondTypeGuides& fromSpheres) {
+// caustics.secondTypeGuides.fill: the sphere-written guides completed in place where a pixel has none,
+// and every pixel's object id.
+void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fromSpheres) {
     SecondTypeGuides& g = f.secondTypeGuides;
     const uint32_t w = f.width, h = f.height;
     graph.addPass("caustics.secondTypeGuides.fill", [&](rg::PassBuilder& b) {
-        const rg::RgTexture in[] = {b.read(fromSpheres.depthMotion), b.read(fromSpheres.normal), b.read(fromSpheres.objectId),
-                                    b.read(f.in->gbuffer.objectId)};
-        g = createGuides(b, w, h, "caustics.secondType");
+        const rg::RgTexture sphereIds = b.read(fromSpheres.sphereObjectId), cameraIds = b.read(f.in->gbuffer.objectId);
+        g.depthMotion = b.write(fromSpheres.depthMotion, rg::Access::StorageReadWrite);
+        g.normal = b.write(fromSpheres.normal, rg::Access::StorageReadWrite);
+        g.objectId = createGuide(b, w, h, "caustics.secondTypeObjectId", rhi::Format::R32_UINT);
         CausticFrame fr = f;
         SecondTypeGuides out = g;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *fr.res;
             rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideFillLayout, "caustics.secondTypeGuides.fill",
                 PassBindingSet(shader_bindings::kSecondTypeGuideFillBindings, 0)
-                    .texture("sphereDepthMotion", ctx.texture(in[0]))
-                    .texture("sphereNormal", ctx.texture(in[1]))
-                    .texture("sphereObjectId", ctx.texture(in[2]))
-                    .texture("cameraObjectId", ctx.texture(in[3]))
+                    .texture("sphereObjectId", ctx.texture(sphereIds))
+                    .texture("cameraObjectId", ctx.texture(cameraIds))
                     .texture("depthMotion", ctx.texture(out.depthMotion))
                     .texture("normal", ctx.texture(out.normal))
                     .texture("objectId", ctx.texture(out.objectId)));
@@ -90,7 +92,7 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SecondTypeGuides
 }  // namespace
 
 void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
-    SecondTypeGuides g;   // written from the spheres
+    SphereGuides g;   // written from the spheres
     const uint32_t w = f.width, h = f.height;
     // Both passes bind the same set (one declaration); the clear reads the buffers without using them.
     for (bool clear : {true, false}) {
@@ -103,14 +105,18 @@ void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
             const rg::RgTexture cameraIds = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
             f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
             if (clear) {
-                g = createGuides(b, w, h, "caustics.sphere");
+                // Half precision (docs/caustics.md "Second-type guides": within the filter's depth and
+                // motion tolerances, and the half of the memory).
+                g.depthMotion = createGuide(b, w, h, "caustics.secondTypeDepthMotion", rhi::Format::RGBA16_FLOAT);
+                g.normal = createGuide(b, w, h, "caustics.secondTypeNormal", rhi::Format::RGBA16_FLOAT);
+                g.sphereObjectId = createGuide(b, w, h, "caustics.sphereObjectId", rhi::Format::R32_UINT);
             } else {
                 g.depthMotion = b.write(g.depthMotion, rg::Access::StorageReadWrite);
                 g.normal = b.write(g.normal, rg::Access::StorageReadWrite);
-                g.objectId = b.write(g.objectId, rg::Access::StorageReadWrite);
+                g.sphereObjectId = b.write(g.sphereObjectId, rg::Access::StorageReadWrite);
             }
             CausticFrame fr = f;
-            SecondTypeGuides out = g;
+            SphereGuides out = g;
             return [=](rg::PassContext& ctx) { recordGuides(ctx, fr, out, cameraDepth, cameraIds, clear); };
         });
     }

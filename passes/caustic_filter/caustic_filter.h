@@ -35,6 +35,12 @@ inline uint32_t filterPoolWidth() { return kFilterPoolTilesPerRow * 8; }
 inline uint32_t filterPoolHeight(uint32_t poolTiles) { return (poolTiles + kFilterPoolTilesPerRow - 1) / kFilterPoolTilesPerRow * 8; }
 // requested: CausticsSettings::filterPoolTiles (0: automatic).
 uint32_t initialFilterPoolTiles(uint32_t width, uint32_t height, uint32_t requested = 0);
+// The second type filtered apart lies only on what the camera sees through specular objects: its pool
+// starts at twice the tiles of their image coverage (the fraction of the screen the planner's bounds
+// cover, caustic_importance.h; twice for the ring of neighbour tiles the list adds), at least
+// kFilterMinPoolTiles, at most the first type's start, and grows like it.
+inline constexpr double kSecondTypePoolCoverageMargin = 2.0;
+uint32_t initialSecondTypePoolTiles(uint32_t width, uint32_t height, double specularCoverage);
 uint32_t grownFilterPoolTiles(uint32_t poolTiles, uint32_t wanted, uint32_t width, uint32_t height);
 
 // Sizes `history` for a width x height view: reallocated, and invalid, when the size changes; a grown pool

@@ -76,6 +76,39 @@ void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
     });
 }
 
+// One type's buffer into a new texture `name` (the shader's one-buffer mode: the buffer bound twice, the
+// texture in all three image slots): the types filtered apart resolve each just before its filter run,
+// so the two buffers, the two textures and the second type's guides are never all alive at once
+// (docs/caustics.md "Second-type guides", memory).
+void addOneTypeResolvePass(rg::RenderGraph& graph, CausticFrame& f, const std::string& pass, rg::RgBuffer& words,
+                           rg::RgTexture& target, const std::string& name) {
+    const uint32_t w = f.width, h = f.height;
+    graph.addPass(pass, [&](rg::PassBuilder& b) {
+        b.setStages(rhi::PipelineStages::Compute);
+        words = b.read(words, rg::Access::SampledRead);
+        target = b.write(b.createTexture(name, screenImageDesc(w, h, name.c_str())));
+        CausticFrame fr = f;
+        const rg::RgBuffer in = words;
+        const rg::RgTexture o = target;
+        const shader::ResolveParams push{
+            w, h,
+            (f.res->floatAtomics ? 0u : shader::kResolveFixedPoint) | shader::kResolveCombinedOnly |
+                (f.wideFixedPoint ? shader::kResolveWide : 0u),
+            1.0f / f.fixedPointScale};
+        return [=](rg::PassContext& ctx) {
+            auto d = PassBindingSet(shader_bindings::kCausticResolveBindings, 0)
+                         .buffer("firstWords", ctx.buffer(in))
+                         .buffer("secondWords", ctx.buffer(in))
+                         .texture("outFirst", ctx.texture(o))
+                         .texture("outSecond", ctx.texture(o))
+                         .texture("outCombined", ctx.texture(o))
+                         .desc();
+            if (!d) log(LogLevel::Error, pass + ": " + d.message());
+            else dispatchImage(ctx, *fr.res, fr.res->filter.resolve, fr.res->filter.resolveLayout, std::move(*d), push, w, h);
+        };
+    });
+}
+
 // This frame's filter inputs that every pass after caustics.temporal reads.
 struct FilterFrame {
     FilterTiles tiles;
@@ -307,14 +340,16 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     return ff.tiles.args;
 }
 
-// caustics.filterCombine: caustics.radiance = both types, each filtered on its own guides.
+// caustics.filterCombine: caustics.radiance = both types, each filtered on its own guides. Without a
+// first-type texture the radiance texture holds the filtered first type and gets the second added.
 void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
     graph.addPass("caustics.filterCombine", [&](rg::PassBuilder& b) {
-        const rg::RgTexture first = b.read(out.firstType), second = b.read(out.secondType);
-        out.radiance = b.write(out.radiance);
+        const bool firstTexture = out.firstType.valid();
+        const rg::RgTexture second = b.read(out.secondType), first = firstTexture ? b.read(out.firstType) : second;
+        out.radiance = b.write(out.radiance, firstTexture ? rg::Access::StorageWrite : rg::Access::StorageReadWrite);
         CausticFrame fr = f;
         rg::RgTexture o = out.radiance;
-        const shader::CombineTypesParams push{{f.width, f.height}};
+        const shader::CombineTypesParams push{{f.width, f.height}, firstTexture ? 0u : 1u, 0u};
         return [=](rg::PassContext& ctx) {
             auto desc = PassBindingSet(shader_bindings::kCombineTypesBindings, 0)
                             .texture("firstType", ctx.texture(first))
@@ -330,20 +365,10 @@ void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
     });
 }
 
-}  // namespace
-
-void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
-    addResolvePass(graph, f, out);
-    if (!f.in->settings.filter) return;
+// The second type's own run of the filter, on its guides (the receiver seen through the glass), with
+// its own history, reprojected with the receiver's motion (docs/caustics.md "Second-type guides").
+void addSecondTypeFilterChain(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
     const SecondTypeGuides& guides = f.secondTypeGuides;
-    if (!f.in->settings.filterSecondTypeApart || !guides.valid() || !f.history->secondType || !f.separateTypes) {
-        out.filterTiles = addFilterChain(graph, f, out.radiance, false);
-        return;
-    }
-    // The first type lies on what the camera sees: its G-buffer. The second lies on the receiver seen
-    // through the glass: filtered apart on that receiver's guides, with its own history, reprojected
-    // with the receiver's motion (docs/caustics.md "Second-type guides"); then both are summed.
-    out.filterTiles = addFilterChain(graph, f, out.firstType, false);
     CausticFrameInputs receiver = *f.in;
     receiver.gbuffer.linearDepth = guides.depthMotion;
     receiver.gbuffer.normalRoughness = guides.normal;
@@ -354,6 +379,43 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
     secondFrame.filterRun = ".secondType";
     addFilterChain(graph, secondFrame, out.secondType, true);
     f.camera = secondFrame.camera;
+    f.casterMotionWords = secondFrame.casterMotionWords;
+    f.instanceMotionRows = secondFrame.instanceMotionRows;
+}
+
+}  // namespace
+
+void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
+    const CausticsSettings& s = f.in->settings;
+    const bool secondTypeRan = s.secondType && !f.plan.maps.empty();
+    // The first type lies on what the camera sees: its G-buffer. The second lies on the receiver seen
+    // through the glass: filtered apart on that receiver's guides; then both are summed.
+    const bool apart = s.filter && s.filterSecondTypeApart && secondTypeRan && f.history->secondType && f.separateTypes;
+    if (apart && !f.in->separateTypes) {
+        // No first-type texture (no host asked for it): the second type is resolved, guided and
+        // filtered first, then the first type into caustics.radiance, filtered there in place, and
+        // caustics.filterCombine adds the second. The guides come after the stored hits and the first
+        // type's buffer is the only one left while they live (the frame's peak, docs/caustics.md).
+        addOneTypeResolvePass(graph, f, "caustics.resolve.secondType", f.radiance2, out.secondType, "caustics.secondType");
+        addSecondTypeGuidePasses(graph, f);
+        addSecondTypeFilterChain(graph, f, out);
+        addOneTypeResolvePass(graph, f, "caustics.resolve", f.radiance1, out.radiance, "caustics.radiance");
+        out.filterTiles = addFilterChain(graph, f, out.radiance, false);
+        addCombinePass(graph, f, out);
+        return;
+    }
+    addResolvePass(graph, f, out);
+    // The second type's guides (culled unless the filter runs it apart or a host reads them), after the
+    // resolve: by then the stored hits and the radiance buffers are gone.
+    if (secondTypeRan) addSecondTypeGuidePasses(graph, f);
+    if (!s.filter) return;
+    if (!apart) {
+        out.filterTiles = addFilterChain(graph, f, out.radiance, false);
+        return;
+    }
+    // A host asked for the types' own textures (an AOV): each filtered in its texture, then summed.
+    addSecondTypeFilterChain(graph, f, out);
+    out.filterTiles = addFilterChain(graph, f, out.firstType, false);
     addCombinePass(graph, f, out);
 }
 

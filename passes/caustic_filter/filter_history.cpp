@@ -32,6 +32,12 @@ uint32_t initialFilterPoolTiles(uint32_t width, uint32_t height, uint32_t reques
     return std::min(screen, std::max(kFilterMinPoolTiles, roundUpToPoolRows(filterScreenTiles(width, height) / kFilterInitialPoolDivisor)));
 }
 
+uint32_t initialSecondTypePoolTiles(uint32_t width, uint32_t height, double specularCoverage) {
+    const double seen = std::clamp(specularCoverage, 0.0, 1.0) * kSecondTypePoolCoverageMargin * filterScreenTiles(width, height);
+    const uint32_t wanted = roundUpToPoolRows(uint32_t(std::min(seen, double(filterScreenTiles(width, height)))));
+    return std::min(initialFilterPoolTiles(width, height), std::max(kFilterMinPoolTiles, wanted));
+}
+
 uint32_t grownFilterPoolTiles(uint32_t poolTiles, uint32_t wanted, uint32_t width, uint32_t height) {
     if (uint64_t(wanted) * kFilterPoolGrowDenominator <= uint64_t(poolTiles) * kFilterPoolGrowNumerator) return poolTiles;
     return std::max(poolTiles, std::min(roundUpToPoolRows(filterScreenTiles(width, height)), roundUpToPoolRows(wanted + wanted / 2)));

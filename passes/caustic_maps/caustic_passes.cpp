@@ -7,6 +7,7 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include "caustic_filter/caustic_filter.h"
 #include "caustic_maps/caustic_internal.h"
 #include "caustics/sphere_capacity.h"
 #include "common/caster_motion.h"
@@ -162,7 +163,10 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
             history->secondType = std::make_shared<CausticViewHistory>();
             history->secondType->viewId = history->viewId;
         }
-        CAUSTICS_CHECK(res->ensureHistory(*history->secondType, in.gbuffer.width, in.gbuffer.height, in.settings.filterPoolTiles));
+        const uint32_t secondPool = in.settings.filterPoolTiles
+                                        ? in.settings.filterPoolTiles
+                                        : initialSecondTypePoolTiles(in.gbuffer.width, in.gbuffer.height, specularCoverage);
+        CAUSTICS_CHECK(res->ensureHistory(*history->secondType, in.gbuffer.width, in.gbuffer.height, secondPool));
     }
 
     CausticFrame f;

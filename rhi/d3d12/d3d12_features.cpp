@@ -26,6 +26,9 @@ D3D12FeatureReport queryD3D12Features(ID3D12Device5* device) {
     if (succeeded(device->CheckFeatureSupport(D3D12_FEATURE_D3D12_OPTIONS5, &o5, sizeof(o5))))
         report.raytracingTier = uint32_t(o5.RaytracingTier);
     report.highestShaderModel = highestShaderModel(device);
+    D3D12_FEATURE_DATA_D3D12_OPTIONS o{};
+    if (succeeded(device->CheckFeatureSupport(D3D12_FEATURE_D3D12_OPTIONS, &o, sizeof(o))))
+        report.typedUavLoadAdditionalFormats = o.TypedUAVLoadAdditionalFormats != FALSE;
     // A runtime older than Windows build 22000 does not know OPTIONS11 and fails the query: no wide atomics.
     D3D12_FEATURE_DATA_D3D12_OPTIONS11 o11{};
     if (succeeded(device->CheckFeatureSupport(D3D12_FEATURE_D3D12_OPTIONS11, &o11, sizeof(o11))))

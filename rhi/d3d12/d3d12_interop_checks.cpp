@@ -39,6 +39,8 @@ Status checkD3D12DeviceRequirements(const D3D12FeatureReport& report, bool requi
     if (report.highestShaderModel < neededModel)
         missing.push_back("shader model " + shaderModelName(neededModel) + " (device reports " +
                           shaderModelName(report.highestShaderModel) + ")");
+    if (requireRayTracing && !report.typedUavLoadAdditionalFormats)
+        missing.push_back("TypedUAVLoadAdditionalFormats (RGBA16F and RGBA32F storage-texture loads; device reports none)");
     if (missing.empty()) return okStatus();
     std::string message = "d3d12: host device '" + std::string(deviceName) + "' cannot run the module: missing ";
     for (size_t i = 0; i < missing.size(); ++i) message += (i ? "; " : "") + missing[i];

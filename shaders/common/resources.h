@@ -13,12 +13,14 @@
 #define CAUSTICS_TEXEL_ARRAY_UINT(tex, p, layer) (tex).Load(int4((p), (layer), 0))
 #define CAUSTICS_IMAGE_STORE(img, p, v) (img)[(p)] = (v)
 #define CAUSTICS_IMAGE_STORE_UINT(img, p, u) (img)[(p)] = (u)
+#define CAUSTICS_IMAGE_LOAD(img, p) (img)[(p)]
 #elif defined(CAUSTICS_LANG_GLSL)
 #define CAUSTICS_TEXEL(tex, p) texelFetch((tex), (p), 0)
 #define CAUSTICS_TEXEL_UINT(tex, p) texelFetch((tex), (p), 0).r
 #define CAUSTICS_TEXEL_ARRAY_UINT(tex, p, layer) texelFetch((tex), ivec3((p), (layer)), 0).r
 #define CAUSTICS_IMAGE_STORE(img, p, v) imageStore((img), (p), (v))
 #define CAUSTICS_IMAGE_STORE_UINT(img, p, u) imageStore((img), (p), uvec4(u))
+#define CAUSTICS_IMAGE_LOAD(img, p) imageLoad((img), (p))
 #endif
 
 #endif  // CAUSTICS_COMMON_RESOURCES_H

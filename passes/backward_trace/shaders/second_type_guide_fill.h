@@ -7,6 +7,10 @@
 // guide id 0 the filter could not average it with its neighbours and it would stay a hole. It takes the
 // guides of the first of its 8 neighbours (fixed order: deterministic) that has a sphere and shows the
 // same object in the camera G-buffer (the same glass). Entries: second_type_guide_fill.comp, .hlsl.
+// In place: a thread writes only its own pixel, and only where the sphere pass wrote no guide; it reads
+// the guides only of pixels the sphere pass wrote (sphereObjectId, which no thread here writes, says
+// which), so no thread reads a texel another one writes. The sphere-written textures are not copied:
+// at 1080p that copy was the second type's largest transient (docs/caustics.md "Second-type guides").
 #include "common/resources.h"
 
 CAUSTICS_SHARED_BEGIN
@@ -30,24 +34,30 @@ CAUSTICS_SHARED_END
 void secondTypeGuideFillThread(uint2 id) {
     if (id.x >= params.size.x || id.y >= params.size.y) return;
     int2 p = int2(id);
-    int2 source = p;
-    uint surface = CAUSTICS_TEXEL_UINT(cameraObjectId, p);
-    if (CAUSTICS_TEXEL_UINT(sphereObjectId, p) == 0u && surface != 0u) {
-        for (uint k = 0u; k < 8u; ++k) {
-            int2 q = p + guideFillNeighbour(k);
-            if (q.x < 0 || q.y < 0 || q.x >= int(params.size.x) || q.y >= int(params.size.y)) continue;
-            if (CAUSTICS_TEXEL_UINT(sphereObjectId, q) == 0u || CAUSTICS_TEXEL_UINT(cameraObjectId, q) != surface) continue;
-            source = q;
-            break;
-        }
+    uint own = CAUSTICS_TEXEL_UINT(sphereObjectId, p);
+    if (own != 0u) {   // the sphere pass wrote the pixel's depth, motion and normal
+        CAUSTICS_IMAGE_STORE_UINT(objectId, p, own);
+        return;
     }
-    CAUSTICS_IMAGE_STORE(depthMotion, p, CAUSTICS_TEXEL(sphereDepthMotion, source));
-    // A filled pixel's photon weight (.w) is stored negated: its sample is not the neighbour's, so the
-    // filter's shot-noise estimate takes the weight but not the pixel's luminance (variance.h).
-    float4 n = CAUSTICS_TEXEL(sphereNormal, source);
-    if (source.x != p.x || source.y != p.y) n.w = -abs(n.w);
-    CAUSTICS_IMAGE_STORE(normal, p, n);
-    CAUSTICS_IMAGE_STORE_UINT(objectId, p, CAUSTICS_TEXEL_UINT(sphereObjectId, source));
+    uint surface = CAUSTICS_TEXEL_UINT(cameraObjectId, p);
+    float4 depthMotionHere = float4(0.0f, 0.0f, 0.0f, 0.0f), normalHere = float4(0.0f, 0.0f, 0.0f, 0.0f);
+    uint idHere = 0u;
+    for (uint k = 0u; k < 8u && surface != 0u; ++k) {
+        int2 q = p + guideFillNeighbour(k);
+        if (q.x < 0 || q.y < 0 || q.x >= int(params.size.x) || q.y >= int(params.size.y)) continue;
+        uint source = CAUSTICS_TEXEL_UINT(sphereObjectId, q);
+        if (source == 0u || CAUSTICS_TEXEL_UINT(cameraObjectId, q) != surface) continue;
+        depthMotionHere = CAUSTICS_IMAGE_LOAD(depthMotion, q);
+        // A filled pixel's photon weight (.w) is stored negated: its sample is not the neighbour's, so the
+        // filter's shot-noise estimate takes the weight but not the pixel's luminance (variance.h).
+        normalHere = CAUSTICS_IMAGE_LOAD(normal, q);
+        normalHere.w = -abs(normalHere.w);
+        idHere = source;
+        break;
+    }
+    CAUSTICS_IMAGE_STORE(depthMotion, p, depthMotionHere);
+    CAUSTICS_IMAGE_STORE(normal, p, normalHere);
+    CAUSTICS_IMAGE_STORE_UINT(objectId, p, idHere);
 }
 #endif
 

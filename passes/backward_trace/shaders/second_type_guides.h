@@ -5,10 +5,12 @@
 // receiver the path reached, not on the glass the G-buffer holds. So the receiver's linear depth (clip w),
 // its normal (facing the arriving path), its object id and its screen motion (where the receiver point
 // was last frame minus where it is now, pixels) are written at the pixel from that pixel's likely-path
-// sphere (caustics.backward: at most one per pixel; a lobe branch's sphere is never likely). Pixels
-// without one hold zeros (id 0: no receiver) until the fill.
-// depthMotion holds (depth, motion x, motion y, last frame's depth): the filter's temporal pass reads it
-// as its linear depth (.x) and, for the second type, reprojects with .yz and tests .w.
+// sphere (caustics.backward: at most one per pixel; a lobe branch's sphere is never likely). The pixel's
+// object id goes to sphereObjectId (the clear pass zeroes it: id 0, no receiver), its other guides to
+// depthMotion and normal, which the fill (second_type_guide_fill.h) completes in place: it writes every
+// pixel whose sphereObjectId is 0, so they need no clearing.
+// depthMotion holds (depth, motion x, motion y, last frame's depth) in half precision: the filter's
+// temporal pass reads it as its linear depth (.x) and, for the second type, reprojects with .yz and tests .w.
 // Entries: second_type_guides.comp, second_type_guides.hlsl; one pipeline, two dispatches (clearPass).
 #include "common/camera.h"
 #include "common/caster_motion.h"
@@ -22,15 +24,16 @@ CAUSTICS_SHARED_BEGIN
 struct SecondTypeGuideParams {
     uint2 size;            // the image, pixels
     uint sphereCapacity;   // the frame's sphere slots (caustics/sphere_capacity.h)
-    uint clearPass;        // 1: zero every pixel's guides; 0: write each sphere's
+    uint clearPass;        // 1: zero every pixel's sphereObjectId; 0: write each sphere's guides
     // 1: instanceMotion holds every instance's rows (common/caster_motion.h): a pixel whose glass moved
     // takes the glass's motion (docs/caustics.md "Moving objects").
     uint objectMotion;
     uint instanceCount;    // instances the rows cover
 };
 
-// Motion of a receiver point that was behind last frame's camera: far off screen, so no history is found.
-CAUSTICS_CONST float kGuideNoHistory = -1.0e9f;
+// Motion of a receiver point that was behind last frame's camera: far off screen, so no history is found
+// (within half precision's range: the guide is stored as half).
+CAUSTICS_CONST float kGuideNoHistory = -6.0e4f;
 // A receiver reached by a reflection can lie behind the camera (clip w <= 0): the filter divides by
 // depths, so the guide holds |w|, at least this (metres).
 CAUSTICS_CONST float kGuideMinDepth = 1.0e-3f;
@@ -103,9 +106,7 @@ CAUSTICS_SHARED_END
 void secondTypeGuidesThread(uint2 id) {
     if (id.x >= params.size.x || id.y >= params.size.y) return;
     if (params.clearPass != 0u) {
-        CAUSTICS_IMAGE_STORE(depthMotion, int2(id), float4(0.0f, 0.0f, 0.0f, 0.0f));
-        CAUSTICS_IMAGE_STORE(normal, int2(id), float4(0.0f, 0.0f, 0.0f, 0.0f));
-        CAUSTICS_IMAGE_STORE_UINT(objectId, int2(id), 0u);
+        CAUSTICS_IMAGE_STORE_UINT(sphereObjectId, int2(id), 0u);
         return;
     }
     uint slot = id.y * params.size.x + id.x;
@@ -131,7 +132,7 @@ void secondTypeGuidesThread(uint2 id) {
     }
     CAUSTICS_IMAGE_STORE(depthMotion, p, float4(g.linearDepth, g.motion.x, g.motion.y, g.previousDepth));
     CAUSTICS_IMAGE_STORE(normal, p, float4(g.normal, g.photonWeight));
-    CAUSTICS_IMAGE_STORE_UINT(objectId, p, g.objectId);
+    CAUSTICS_IMAGE_STORE_UINT(sphereObjectId, p, g.objectId);
 }
 #endif
 

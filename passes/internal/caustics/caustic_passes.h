@@ -207,8 +207,9 @@ struct CausticFrameInputs {
 // The second type's own filter guides (caustics.secondTypeGuides; docs/caustics.md "Second-type guides"):
 // at a pixel whose camera path went through glass to a diffuse receiver, that receiver's linear depth
 // (clip w) and screen motion (last frame's texel-centre position minus this frame's, pixels) in
-// depthMotion (RGBA32F: depth, motion x, motion y, last frame's depth), its normal facing the arriving path (RGBA16F xyz)
-// and its object id (R32UI, instance + 1); zeros (id 0) at every other pixel.
+// depthMotion (RGBA16F: depth, motion x, motion y, last frame's depth), its normal facing the arriving path
+// (RGBA16F xyz, w the photon weight) and its object id (R32UI, instance + 1); zeros (id 0) at every other
+// pixel.
 struct SecondTypeGuides {
     rg::RgTexture depthMotion, normal, objectId;
     bool valid() const { return depthMotion.valid() && normal.valid() && objectId.valid(); }

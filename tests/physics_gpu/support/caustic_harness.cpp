@@ -137,7 +137,7 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         CAUSTICS_TRY(BufferHandle rbPlans, readbackBuffer(device, planBytes));
         CAUSTICS_TRY(BufferHandle rbTiles, readbackBuffer(device, 4));
         const SecondTypeGuides& guides = out.secondTypeGuides;
-        CAUSTICS_TRY(BufferHandle rbGuideDepth, readbackBuffer(device, pixels * 16));
+        CAUSTICS_TRY(BufferHandle rbGuideDepth, readbackBuffer(device, pixels * 8));
         CAUSTICS_TRY(BufferHandle rbGuideNormal, readbackBuffer(device, pixels * 8));
         CAUSTICS_TRY(BufferHandle rbGuideId, readbackBuffer(device, pixels * 4));
         CAUSTICS_TRY(CommandListHandle copy, device.createCommandList());
@@ -173,7 +173,8 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
             run.spheres = fetch<CausticSphere>(device, rbSpheres, std::min(run.stats[kStatSpheres], run.stats[kStatSphereCapacity]));
         if (out.filterTiles.valid()) run.filterTiles = fetch<uint32_t>(device, rbTiles, 1).at(0);
         if (guides.valid()) {
-            run.guideDepthMotion = fetch<glm::vec4>(device, rbGuideDepth, pixels);
+            for (const glm::uvec2& h : fetch<glm::uvec2>(device, rbGuideDepth, pixels))   // RGBA16F
+                run.guideDepthMotion.push_back(glm::vec4(glm::unpackHalf2x16(h.x), glm::unpackHalf2x16(h.y)));
             for (const glm::uvec2& h : fetch<glm::uvec2>(device, rbGuideNormal, pixels))
                 run.guideNormal.push_back(glm::vec4(glm::unpackHalf2x16(h.x), glm::unpackHalf2x16(h.y)));
             run.guideObjectId = fetch<uint32_t>(device, rbGuideId, pixels);

@@ -10,14 +10,21 @@
 namespace caustics::rhi {
 namespace {
 
-TEST(D3D12DeviceRequirements, DxrTier10AndShaderModel63AreEnough) {
-    EXPECT_TRUE(checkD3D12DeviceRequirements({D3D12_RAYTRACING_TIER_1_0, D3D_SHADER_MODEL_6_3}, true, "gpu").ok());
+TEST(D3D12DeviceRequirements, DxrTier10ShaderModel63AndTypedUavLoadsAreEnough) {
+    EXPECT_TRUE(checkD3D12DeviceRequirements({D3D12_RAYTRACING_TIER_1_0, D3D_SHADER_MODEL_6_3, false, true}, true, "gpu").ok());
+}
+
+TEST(D3D12DeviceRequirements, RayTracingWithoutTypedUavLoadsIsRefused) {
+    Status s = checkD3D12DeviceRequirements({D3D12_RAYTRACING_TIER_1_0, D3D_SHADER_MODEL_6_3, false, false}, true, "gpu");
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.message().find("TypedUAVLoadAdditionalFormats"), std::string::npos) << s.message();
 }
 
 TEST(D3D12DeviceRequirements, OneErrorNamesEveryMissingFeature) {
     Status s = checkD3D12DeviceRequirements({D3D12_RAYTRACING_TIER_NOT_SUPPORTED, D3D_SHADER_MODEL_6_0}, true, "old gpu");
     ASSERT_FALSE(s.ok());
-    for (const char* part : {"'old gpu'", "RaytracingTier 1.0", "NOT_SUPPORTED", "shader model 6.3", "reports 6.0"})
+    for (const char* part : {"'old gpu'", "RaytracingTier 1.0", "NOT_SUPPORTED", "shader model 6.3", "reports 6.0",
+                             "TypedUAVLoadAdditionalFormats"})
         EXPECT_NE(s.message().find(part), std::string::npos) << "missing '" << part << "' in: " << s.message();
 }
 

@@ -34,10 +34,15 @@ struct D3D12FeatureReport {
     // D3D12_FEATURE_DATA_D3D12_OPTIONS11: 64-bit atomics on UAVs reached through a descriptor heap, which
     // is how the backend binds the caustic radiance buffers (SM 6.6 alone promises them only on root UAVs).
     bool atomicInt64OnDescriptorHeapResource = false;
+    // D3D12_FEATURE_DATA_D3D12_OPTIONS::TypedUAVLoadAdditionalFormats: loads from RGBA16F and RGBA32F
+    // storage textures (the second type's guide fill and the types' combine read what they write); a set
+    // feature of D3D12 hardware, not a guarantee (only the R32 formats are).
+    bool typedUavLoadAdditionalFormats = false;
 };
 
 // ok, or ONE error naming every missing feature (e.g. "DXR: RaytracingTier 1.0 (device reports
-// NOT_SUPPORTED); shader model 6.3 (device reports 6.0)"). Device-free.
+// NOT_SUPPORTED); shader model 6.3 (device reports 6.0)"); the caustic passes (requireRayTracing) also
+// need typed UAV loads of the additional formats. Device-free.
 Status checkD3D12DeviceRequirements(const D3D12FeatureReport& report, bool requireRayTracing,
                                     std::string_view deviceName);
 
