@@ -73,9 +73,9 @@ struct CausticsSettings {
     bool filter = true;
     // Filter the second type apart, on the receiver seen through the glass (its own guides, history and
     // motion; docs/caustics.md "Second-type guides"). Off by default: it costs a second radiance buffer,
-    // a full-screen second-type texture, the guides and a second history (the filter's share 59 MiB at
-    // 1080p, within its 64 MiB budget, but 284 MiB at 4K, over the 320 MiB the caustic passes and the
-    // filter may take there, MemoryBudget.*).
+    // a full-screen second-type texture, the guides and a second history (the filter's share at 1080p
+    // 59 MiB with lavapipe's sizes, 66 with the H200's, about its 64 MiB budget; 284 MiB at 4K, over the
+    // 320 MiB the caustic passes and the filter may take there, MemoryBudget.*).
     bool filterSecondTypeApart = false;
     // History length cap, frames: with a still view the temporal step is the plain mean of the last
     // frames until this many, then an exponential average with weight 1 / filterMaxHistory.
