@@ -40,6 +40,29 @@ namespace {
 
 using namespace filter;
 
+// The resolve's push constants: fixed-point or float words, one buffer for both types or two.
+shader::ResolveParams resolveParams(const CausticFrame& f, bool oneBuffer) {
+    return {f.width, f.height,
+            (f.res->floatAtomics ? 0u : shader::kResolveFixedPoint) | (oneBuffer ? shader::kResolveCombinedOnly : 0u) |
+                (f.wideFixedPoint ? shader::kResolveWide : 0u),
+            1.0f / f.fixedPointScale};
+}
+
+// Records the resolve shader: words `first` and `second` into the three image slots.
+void recordResolve(rg::PassContext& ctx, const CausticFrame& f, const std::string& pass, rg::RgBuffer first,
+                   rg::RgBuffer second, rg::RgTexture outFirst, rg::RgTexture outSecond, rg::RgTexture outCombined,
+                   const shader::ResolveParams& push) {
+    auto d = PassBindingSet(shader_bindings::kCausticResolveBindings, 0)
+                 .buffer("firstWords", ctx.buffer(first))
+                 .buffer("secondWords", ctx.buffer(second))
+                 .texture("outFirst", ctx.texture(outFirst))
+                 .texture("outSecond", ctx.texture(outSecond))
+                 .texture("outCombined", ctx.texture(outCombined))
+                 .desc();
+    if (!d) log(LogLevel::Error, pass + ": " + d.message());
+    else dispatchImage(ctx, *f.res, f.res->filter.resolve, f.res->filter.resolveLayout, std::move(*d), push, f.width, f.height);
+}
+
 void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
     const uint32_t w = f.width, h = f.height;
     graph.addPass("caustics.resolve", [&](rg::PassBuilder& b) {
@@ -56,22 +79,10 @@ void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
         out.radiance = b.write(b.createTexture("caustics.radiance", screenImageDesc(w, h, "caustics.radiance")));
         CausticFrame fr = f;
         CausticOutputs o = out;
-        const shader::ResolveParams push{
-            w, h,
-            (f.res->floatAtomics ? 0u : shader::kResolveFixedPoint) | (separate ? 0u : shader::kResolveCombinedOnly) |
-                (f.wideFixedPoint ? shader::kResolveWide : 0u),
-            1.0f / f.fixedPointScale};
+        const shader::ResolveParams push = resolveParams(f, !separate);
         return [=](rg::PassContext& ctx) {
-            const rg::RgTexture first = separate ? o.firstType : o.radiance, second = separate ? o.secondType : o.radiance;
-            auto d = PassBindingSet(shader_bindings::kCausticResolveBindings, 0)
-                         .buffer("firstWords", ctx.buffer(fr.radiance1))
-                         .buffer("secondWords", ctx.buffer(separate ? fr.radiance2 : fr.radiance1))
-                         .texture("outFirst", ctx.texture(first))
-                         .texture("outSecond", ctx.texture(second))
-                         .texture("outCombined", ctx.texture(o.radiance))
-                         .desc();
-            if (!d) log(LogLevel::Error, "caustics.resolve: " + d.message());
-            else dispatchImage(ctx, *fr.res, fr.res->filter.resolve, fr.res->filter.resolveLayout, std::move(*d), push, w, h);
+            recordResolve(ctx, fr, "caustics.resolve", fr.radiance1, separate ? fr.radiance2 : fr.radiance1,
+                          separate ? o.firstType : o.radiance, separate ? o.secondType : o.radiance, o.radiance, push);
         };
     });
 }
@@ -82,30 +93,15 @@ void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
 // (docs/caustics.md "Second-type guides", memory).
 void addOneTypeResolvePass(rg::RenderGraph& graph, CausticFrame& f, const std::string& pass, rg::RgBuffer& words,
                            rg::RgTexture& target, const std::string& name) {
-    const uint32_t w = f.width, h = f.height;
     graph.addPass(pass, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         words = b.read(words, rg::Access::SampledRead);
-        target = b.write(b.createTexture(name, screenImageDesc(w, h, name.c_str())));
+        target = b.write(b.createTexture(name, screenImageDesc(f.width, f.height, name.c_str())));
         CausticFrame fr = f;
         const rg::RgBuffer in = words;
         const rg::RgTexture o = target;
-        const shader::ResolveParams push{
-            w, h,
-            (f.res->floatAtomics ? 0u : shader::kResolveFixedPoint) | shader::kResolveCombinedOnly |
-                (f.wideFixedPoint ? shader::kResolveWide : 0u),
-            1.0f / f.fixedPointScale};
-        return [=](rg::PassContext& ctx) {
-            auto d = PassBindingSet(shader_bindings::kCausticResolveBindings, 0)
-                         .buffer("firstWords", ctx.buffer(in))
-                         .buffer("secondWords", ctx.buffer(in))
-                         .texture("outFirst", ctx.texture(o))
-                         .texture("outSecond", ctx.texture(o))
-                         .texture("outCombined", ctx.texture(o))
-                         .desc();
-            if (!d) log(LogLevel::Error, pass + ": " + d.message());
-            else dispatchImage(ctx, *fr.res, fr.res->filter.resolve, fr.res->filter.resolveLayout, std::move(*d), push, w, h);
-        };
+        const shader::ResolveParams push = resolveParams(f, true);
+        return [=](rg::PassContext& ctx) { recordResolve(ctx, fr, pass, in, in, o, o, o, push); };
     });
 }
 
