@@ -33,8 +33,9 @@ uint32_t initialFilterPoolTiles(uint32_t width, uint32_t height, uint32_t reques
 }
 
 uint32_t initialSecondTypePoolTiles(uint32_t width, uint32_t height, double specularCoverage) {
-    const double seen = std::clamp(specularCoverage, 0.0, 1.0) * kSecondTypePoolCoverageMargin * filterScreenTiles(width, height);
-    const uint32_t wanted = roundUpToPoolRows(uint32_t(std::min(seen, double(filterScreenTiles(width, height)))));
+    const double screen = filterScreenTiles(width, height);
+    const double seen = std::clamp(specularCoverage, 0.0, 1.0) * kSecondTypePoolCoverageMargin * screen;
+    const uint32_t wanted = roundUpToPoolRows(uint32_t(std::min(seen, screen)));
     return std::min(initialFilterPoolTiles(width, height), std::max(kFilterMinPoolTiles, wanted));
 }
 

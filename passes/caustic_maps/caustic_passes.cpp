@@ -7,8 +7,7 @@
 
 #include <glm/gtc/packing.hpp>
 
-#include "caustic_filter/caustic_filter.h"
-#include "caustic_maps/caustic_internal.h"
+#include "caustic_maps/caustic_internal.h"   // and caustic_filter/caustic_filter.h: the filter pool sizes
 #include "caustics/sphere_capacity.h"
 #include "common/caster_motion.h"
 #include "common/octahedral.h"

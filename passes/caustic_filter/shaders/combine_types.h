@@ -1,7 +1,8 @@
 #ifndef CAUSTICS_PASS_COMBINE_TYPES_H
 #define CAUSTICS_PASS_COMBINE_TYPES_H
 // caustics.radiance = the first type filtered on the camera G-buffer (its own texture, or already in
-// caustics.radiance) + the second type filtered on its own guides (docs/caustics.md "Second-type guides"), in the shared dialect (docs/shaders.md).
+// caustics.radiance) + the second type filtered on its own guides (docs/caustics.md "Second-type
+// guides"), in the shared dialect (docs/shaders.md).
 // Entries: combine_types.comp, combine_types.hlsl.
 #include "common/resources.h"
 
