@@ -18,6 +18,14 @@ CAUSTICS_CONST float kGatherDiskThickness = 0.25f;
 CAUSTICS_CONST uint kWallProbeCount = 8u;
 CAUSTICS_CONST float kWallProbeCosHalfStep = 0.923879532511287f;  // cos(pi / 8)
 
+// Folds of the camera path: where the pixel-to-receiver map folds, dP/dx and dP/dy turn parallel and the
+// footprint's area goes to zero while its length does not (a pixel there sees a thin strip of the
+// receiver, second-order terms the differential leaves out). The footprint width never drops below this
+// fraction of the footprint's major axis, so the disk keeps about the photons an ordinary pixel of that
+// length gathers; footprints less elongated than 1 : 1 / kFoldMinorFraction^2 = 1 : 4 are untouched
+// (docs/physics.md "Second-type density estimate", "Folds").
+CAUSTICS_CONST float kFoldMinorFraction = 0.25f;
+
 struct GatherRadiusLimits {
     float scale;             // CausticsSettings::sphereRadiusScale: radius in footprint widths
     float minMagnification;  // footprint width clamp relative to the unfolded pixel width
@@ -27,12 +35,15 @@ struct GatherRadiusLimits {
 };
 
 // Radius of the gather disk for a pixel whose footprint parallelogram on the receiver has area
-// `footprintArea` (m^2) and whose unfolded width (path length x pixel angle, the footprint without
-// the specular chain's magnification) is `unfoldedWidth` (m). The width sqrt(area) is clamped to
-// [minMagnification, maxMagnification] x unfoldedWidth (ray differentials blow up at folds of the
-// camera path and at grazing incidence), scaled, then clamped to [minRadius, maxRadius].
-CAUSTICS_FN float gatherDiskRadius(float footprintArea, float unfoldedWidth, GatherRadiusLimits l) {
+// `footprintArea` (m^2) and major axis `footprintMajorAxis` (m), and whose unfolded width (path length x
+// pixel angle, the footprint without the specular chain's magnification) is `unfoldedWidth` (m). The
+// width sqrt(area), at least kFoldMinorFraction x the major axis (folds), is clamped to
+// [minMagnification, maxMagnification] x unfoldedWidth (ray differentials collapse where the camera
+// path focuses and blow up at grazing incidence), scaled, then clamped to [minRadius, maxRadius].
+CAUSTICS_FN float gatherDiskRadius(float footprintArea, float footprintMajorAxis, float unfoldedWidth, GatherRadiusLimits l) {
     float width = sqrt(max(footprintArea, 0.0f));
+    float foldWidth = kFoldMinorFraction * footprintMajorAxis;
+    if (foldWidth > width) width = foldWidth;      // false when either is NaN
     if (!(width == width)) width = unfoldedWidth;  // NaN from a degenerate differential
     width = clamp(width, l.minMagnification * unfoldedWidth, l.maxMagnification * unfoldedWidth);
     return clamp(l.scale * width, l.minRadius, l.maxRadius);

@@ -118,6 +118,14 @@ CAUSTICS_FN RayDifferential scatterRayDifferential(RayDifferential rd, float3 d,
 // Area of the parallelogram one pixel covers on the surface the differential was transferred to.
 CAUSTICS_FN float rayFootprintArea(RayDifferential rd) { return length(cross(rd.dPdx, rd.dPdy)); }
 
+// The parallelogram's longest extent: the larger singular value of [dP/dx dP/dy] (the square root of the
+// larger eigenvalue of their Gram matrix, whose determinant is the squared area).
+CAUSTICS_FN float rayFootprintMajorAxis(RayDifferential rd) {
+    float a = dot(rd.dPdx, rd.dPdx), b = dot(rd.dPdy, rd.dPdy), area = rayFootprintArea(rd);
+    float trace = a + b;
+    return sqrt(0.5f * (trace + sqrt(max(trace * trace - 4.0f * area * area, 0.0f))));
+}
+
 CAUSTICS_SHARED_END
 
 #endif  // CAUSTICS_COMMON_RAY_DIFFERENTIAL_H

@@ -112,7 +112,7 @@ void appendBranchSphere(BackwardBranch b, SurfaceHit h, float3 x, uint pixel, Pi
         limits.maxMagnification = params.maxMagnification;
         limits.minRadius = params.minRadius;
         limits.maxRadius = params.maxRadius;
-        radius = gatherDiskRadius(rayFootprintArea(b.rd), b.pathLength * sqrt(pinholePixelArea(cam)), limits);
+        radius = gatherDiskRadius(rayFootprintArea(b.rd), rayFootprintMajorAxis(b.rd), b.pathLength * sqrt(pinholePixelArea(cam)), limits);
     }
     CausticSphere s;
     s.centre = x;

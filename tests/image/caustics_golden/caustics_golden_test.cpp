@@ -13,7 +13,8 @@
 // max-energy-deviation"), which scripts/update-goldens.sh rewrites with the goldens. Measured
 // 2026-12-03 (lavapipe, the second type's lobe split and 0.75-footprint gather disk, docs/caustics.md
 // "Second-type lobes"): block L1 0.40 / 0.27 / 0.20 (built-in first / second / filtered), 0.107 / 0.74 /
-// 0.072 (ball), 0.083 / 0.22 / 0.068 (ring; the smaller disk gathers fewer photons a frame); the
+// 0.072 (ball), 0.083 / 0.22 / 0.068 (ring; the smaller disk gathers fewer photons a frame; 0.20 / 0.067
+// since the fold floor of the gather disk, docs/physics.md "Folds of the camera path"); the
 // filtered figures are the SVGF-like filter's (docs/caustics.md "Filter"), which keeps more of one
 // frame's detail than the earlier blur. The golden's own seed reproduces it (measured
 // block L1 4e-5 to 8e-5, energy 1.00000 +- 1e-5: the order of float atomics and the EXR's half-float

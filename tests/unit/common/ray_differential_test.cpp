@@ -136,12 +136,33 @@ TEST(RayDifferential, InterpolatedNormalDerivativeMatchesFiniteDifferences) {
 
 TEST(GatherDisk, RadiusIsTheScaledFootprintWidthWithinItsClamps) {
     sh::GatherRadiusLimits l{2.0f, 1.0f / 64.0f, 16.0f, 1e-4f, 0.25f};
-    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(1e-4f, 0.02f, l), 2.0f * 0.01f);               // width 0.01 m
-    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(0.0f, 0.02f, l), 2.0f * 0.02f / 64.0f);        // fold: min magnification
-    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(1.0f, 0.005f, l), 2.0f * 0.005f * 16.0f);      // grazing: max magnification
-    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(4.0f, 1.0f, l), 0.25f);                         // metres cap
-    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(0.0f, 1e-5f, l), 1e-4f);                        // metres floor
-    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(std::nanf(""), 0.02f, l), 2.0f * 0.02f);        // NaN: unfolded width
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(1e-4f, 0.01f, 0.02f, l), 2.0f * 0.01f);           // square 0.01 m
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(1e-4f, 0.02f, 0.02f, l), 2.0f * 0.01f);           // 1 : 4, untouched
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(0.0f, 0.0f, 0.02f, l), 2.0f * 0.02f / 64.0f);     // collapsed: min magnification
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(1.0f, 1.0f, 0.005f, l), 2.0f * 0.005f * 16.0f);   // grazing: max magnification
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(4.0f, 2.0f, 1.0f, l), 0.25f);                     // metres cap
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(0.0f, 0.0f, 1e-5f, l), 1e-4f);                    // metres floor
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(std::nanf(""), std::nanf(""), 0.02f, l), 2.0f * 0.02f);  // NaN: unfolded width
+}
+
+// A fold of the camera path: the footprint is a strip (area -> 0, length finite); the width stays at
+// kFoldMinorFraction of the strip's length instead of collapsing with the area.
+TEST(GatherDisk, FoldedFootprintKeepsAFractionOfItsLength) {
+    sh::GatherRadiusLimits l{1.0f, 1.0f / 64.0f, 16.0f, 1e-4f, 0.25f};
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(1e-8f, 0.01f, 0.01f, l), sh::kFoldMinorFraction * 0.01f);
+    EXPECT_FLOAT_EQ(sh::gatherDiskRadius(0.0f, 0.01f, 0.01f, l), sh::kFoldMinorFraction * 0.01f);
+}
+
+TEST(RayDifferential, FootprintMajorAxisIsTheParallelogramsLargerSingularValue) {
+    sh::RayDifferential rd{};
+    rd.dPdx = glm::vec3(3.0f, 0.0f, 0.0f);
+    rd.dPdy = glm::vec3(0.0f, 0.0f, 0.5f);
+    EXPECT_NEAR(sh::rayFootprintMajorAxis(rd), 3.0f, 1e-5f);
+    rd.dPdy = glm::vec3(3.0f, 0.0f, 0.0f);  // parallel (a fold): zero area, singular value 3 sqrt(2)
+    EXPECT_NEAR(sh::rayFootprintMajorAxis(rd), 3.0f * std::sqrt(2.0f), 1e-4f);
+    rd.dPdx = glm::vec3(1.0f, 0.0f, 1.0f);  // rotated square of side sqrt(2)
+    rd.dPdy = glm::vec3(-1.0f, 0.0f, 1.0f);
+    EXPECT_NEAR(sh::rayFootprintMajorAxis(rd), std::sqrt(2.0f), 1e-5f);
 }
 
 TEST(GatherDisk, HitsCountOnlyNearTheTangentPlaneInsideTheRadius) {
