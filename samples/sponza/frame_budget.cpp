@@ -84,7 +84,7 @@ Status checkFrameSize(const rhi::Capabilities& caps, uint32_t width, uint32_t he
     return okStatus();
 }
 
-uint64_t FrameMemory::persistentBytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const {
+uint64_t persistentFrameBytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) {
     auto texture = [&](rhi::Format f) { return device.memoryRequirements(rhi::TextureDesc().setSize(width, height).setFormat(f)).size; };
     auto readback = [&](uint64_t bytesPerPixel) {
         return device.memoryRequirements(rhi::BufferDesc().setByteSize(bytesPerPixel * width * height)
@@ -100,20 +100,14 @@ uint64_t FrameMemory::persistentBytes(rhi::IDevice& device, uint32_t width, uint
     return bytes;
 }
 
-uint64_t FrameMemory::heapBytes(uint32_t width, uint32_t height) const {
-    // Linear: past kMinSphereAllocation pixels the sphere list and instances follow the specular
-    // surfaces in view, not the pixels (caustics/sphere_capacity.h), so this over-estimates there.
-    return uint64_t(std::ceil(double(fixedBytes) + heapBytesPerPixel * double(width) * double(height)));
-}
-
-uint64_t FrameMemory::bytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const {
-    return heapBytes(width, height) + persistentBytes(device, width, height, s);
+Result<uint64_t> frameHeapBytes(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
+    CAUSTICS_TRY(GraphMemory graph, frameGraphMemory(device, module, width, height));
+    return graph.heap;
 }
 
 Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& module) {
     // Both under kMinSphereAllocation pixels (caustics/sphere_capacity.h), where the second type's sphere
-    // list and instances take a slot per pixel like the images: the fit is exact there and over-estimates
-    // past it, where they follow the specular surfaces in view (the safe side for a refusal).
+    // list and instances take a slot per pixel like the images.
     constexpr uint32_t kSmall[2][2] = {{64, 48}, {128, 96}};
     GraphMemory graph[2];
     for (int i = 0; i < 2; ++i) {
@@ -141,23 +135,28 @@ Result<std::vector<MemoryEntry>> moduleFrameReport(rhi::IDevice& device, Caustic
     return report;
 }
 
-Result<FrameMemory> checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
-    const rhi::Capabilities& caps = device.capabilities();
-    CAUSTICS_CHECK(checkFrameSize(caps, width, height));
-    CAUSTICS_TRY(FrameMemory memory, measureFrameMemory(device, module));
+Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
+    return checkFrameFitsDevice(device, module, width, height, device.capabilities());
+}
+
+Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height,
+                            const rhi::Capabilities& limits) {
+    CAUSTICS_CHECK(checkFrameSize(limits, width, height));
+    CAUSTICS_TRY(uint64_t heap, frameHeapBytes(device, module, width, height));
     std::string size = std::to_string(width) + "x" + std::to_string(height);
-    uint64_t heap = memory.heapBytes(width, height);
-    if (caps.maxAllocationBytes && heap > caps.maxAllocationBytes)
+    if (limits.maxAllocationBytes && heap > limits.maxAllocationBytes) {
+        CAUSTICS_TRY(FrameMemory fit, measureFrameMemory(device, module));
         return makeError("frame memory: " + size + " with these settings needs a " + gib(heap) + " render-graph transient heap (one allocation; " +
-                         "largest fixed part: " + memory.largestFixed + " " + gib(memory.largestFixedBytes) +
-                         "), more than the device's largest allocation " + gib(caps.maxAllocationBytes) + " (" +
-                         caps.adapterName + ")");
-    uint64_t frame = memory.bytes(device, width, height, module.settings());
-    if (caps.deviceMemoryBytes && frame > caps.deviceMemoryBytes)
+                         "largest fixed part: " + fit.largestFixed + " " + gib(fit.largestFixedBytes) +
+                         "), more than the device's largest allocation " + gib(limits.maxAllocationBytes) + " (" +
+                         limits.adapterName + ")");
+    }
+    uint64_t frame = heap + persistentFrameBytes(device, width, height, module.settings());
+    if (limits.deviceMemoryBytes && frame > limits.deviceMemoryBytes)
         return makeError("--width/--height: " + size + " needs " +
                          gib(frame) + " of device memory (measured from the frame's render graph), more than the " +
-                         gib(caps.deviceMemoryBytes) + " the device has (" + caps.adapterName + ")");
-    return memory;
+                         gib(limits.deviceMemoryBytes) + " the device has (" + limits.adapterName + ")");
+    return okStatus();
 }
 
 }  // namespace caustics::sample

@@ -13,17 +13,23 @@ namespace caustics::sample {
 // The texture side and the largest single allocation (the sample's HDR read-back): no module needed.
 Status checkFrameSize(const rhi::Capabilities& caps, uint32_t width, uint32_t height);
 
-// Device memory of one frame as a function of its pixel count, for the module's current settings.
+// The module's frame graph's transient heap as a function of its pixel count (a fit), for the module's
+// current settings: what grows with the image and what does not, to explain a refusal.
 struct FrameMemory {
     uint64_t fixedBytes = 0;          // transient heap at zero pixels: caustic maps, hit buffer, ...
     double heapBytesPerPixel = 0.0;   // transient heap growth per pixel: G-buffer, direct, caustic images, ...
     std::string largestFixed;         // the largest transient whose size does not depend on the pixels
     uint64_t largestFixedBytes = 0;   // (the hit buffer: CausticsSettings::maxStoredHits x 64 bytes)
-    uint64_t heapBytes(uint32_t width, uint32_t height) const;
-    // Per frame size, from the device's memory requirements of the persistent and read-back resources.
-    uint64_t persistentBytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const;
-    uint64_t bytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s) const;
 };
+
+// Per frame size, from the device's memory requirements of the persistent and read-back resources.
+uint64_t persistentFrameBytes(rhi::IDevice& device, uint32_t width, uint32_t height, const CausticsSettings& s);
+
+// The transient heap of the module's frame graph at width x height: the graph built and compiled
+// against the device's memory requirements (each resource created unbound, never executed). Exact on
+// any device, where a fit from small sizes is not (docs/viewer.md "Device limits"). An error names a
+// resource the device cannot create.
+Result<uint64_t> frameHeapBytes(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height);
 
 // Builds the module's frame graph at two small sizes (built and compiled against the device's memory
 // requirements, never executed: the module commits nothing) and fits the transient heap's size, which
@@ -37,9 +43,12 @@ Result<FrameMemory> measureFrameMemory(rhi::IDevice& device, CausticsModule& mod
 Result<std::vector<MemoryEntry>> moduleFrameReport(rhi::IDevice& device, CausticsModule& module, uint32_t width,
                                                    uint32_t height);
 
-// checkFrameSize, then the measured frame: the transient heap (one allocation) against the largest
-// allocation, and the whole frame against the device-local heap. Errors name the size and the limit.
-// Returns the measurement.
-Result<FrameMemory> checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height);
+// checkFrameSize, then the frame's graph at this very size (frameHeapBytes): the transient heap (one
+// allocation) against the largest allocation, and the whole frame against the device-local heap, both
+// against `limits` (the device's own capabilities unless given). Errors name the size, the limit and,
+// for the heap, its largest fixed part (measureFrameMemory).
+Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height);
+Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height,
+                            const rhi::Capabilities& limits);
 
 }  // namespace caustics::sample

@@ -172,9 +172,8 @@ int run(const sample::CliOptions& o) {
         std::fprintf(stderr, "caustics-sponza: %s\n", module.message().c_str());
         return 1;
     }
-    auto memory = sample::checkFrameFitsDevice(**device, **module, o.width, o.height);
-    if (!memory) {
-        std::fprintf(stderr, "caustics-sponza: %s\n", memory.message().c_str());
+    if (Status fits = sample::checkFrameFitsDevice(**device, **module, o.width, o.height); !fits) {
+        std::fprintf(stderr, "caustics-sponza: %s\n", fits.message().c_str());
         return 1;
     }
     // Everything the module holds in one frame, from its frame graph built and sized at this size.

@@ -1,12 +1,11 @@
-// The sample refuses frames that do not fit the device from a measurement of the module's render graph
-// (samples/sponza/frame_budget.h): the transient heap at two small sizes, fitted as fixed + per pixel.
-// These tests hold the fit against the graph itself at other sizes and settings.
+// The sample refuses frames that do not fit the device from the module's render graph built and sized at
+// the frame's own size (samples/sponza/frame_budget.h), and explains a refusal with a fit of the heap
+// from two small sizes (fixed + per pixel). These tests hold both against the graph itself.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
 #include "caustics/caustic_passes.h"
-#include "caustics/sphere_capacity.h"
 #include "caustics/render_graph/memory_sizer.h"
 #include "caustics/scene/builtin_scenes.h"
 #include "caustics/scene/gpu_scene.h"
@@ -43,24 +42,42 @@ protected:
     }
 };
 
-// Measured (lavapipe, the "[ measured ]" lines): under kMinSphereAllocation pixels every per-pixel
-// buffer grows with the image, and the fit from 64x48 and 128x96 predicts the heap at 96x72 and 112x84
-// within the measurement's rounding (each resource is rounded to its alignment). Bound: 2 %. Past it the
-// second type's sphere buffers follow the specular surfaces in view instead (caustics/sphere_capacity.h),
-// so the fit may only over-estimate: a refusal errs on the safe side.
-TEST_F(FrameMemory, FitFromTwoSmallSizesPredictsTheHeapAtLargerOnes) {
+// The check measures the heap at the size it checks, so it is exact on any device: a fit from two small
+// sizes is exact on lavapipe but came out 4.5 % / 2.2 % under the graph's heap on the H200 at 96x72 /
+// 112x84 (docs/measurements/h200/sample_memory_fit.txt), the unsafe side for a refusal. Here the check
+// accepts a frame whose heap and whole frame meet the limits exactly and refuses one byte less, at sizes
+// under and past kMinSphereAllocation; the fit's prediction is printed beside (not a decision any more).
+TEST_F(FrameMemory, CheckMeasuresTheHeapAtTheCheckedSizeAndHoldsItToTheByte) {
     auto module = makeModule(1u << 16);
     ASSERT_TRUE(module);
-    auto memory = sample::measureFrameMemory(*device, *module);
-    ASSERT_TRUE(memory) << memory.message();
-    EXPECT_GT(memory->heapBytesPerPixel, 100.0);   // G-buffer, direct, caustic and filter images
+    auto fit = sample::measureFrameMemory(*device, *module);
+    ASSERT_TRUE(fit) << fit.message();
+    EXPECT_GT(fit->heapBytesPerPixel, 100.0);   // G-buffer, direct, caustic and filter images
     for (auto [w, h] : {std::pair{96u, 72u}, std::pair{112u, 84u}, std::pair{320u, 240u}, std::pair{640u, 480u}}) {
-        double actual = double(graphHeap(*module, w, h));
-        double predicted = double(memory->heapBytes(w, h));
-        std::printf("[ measured ] %ux%u: heap %.0f bytes, predicted %.0f (%.3f %%)\n", w, h, actual, predicted,
-                    100.0 * (predicted - actual) / actual);
-        if (w * h < kMinSphereAllocation) EXPECT_NEAR(predicted, actual, 0.02 * actual) << w << "x" << h;
-        else EXPECT_GE(predicted, actual) << w << "x" << h;
+        const uint64_t actual = graphHeap(*module, w, h);
+        auto measured = sample::frameHeapBytes(*device, *module, w, h);
+        ASSERT_TRUE(measured) << measured.message();
+        const double predicted = double(fit->fixedBytes) + fit->heapBytesPerPixel * double(w) * double(h);
+        std::printf("[ measured ] %ux%u: heap %llu bytes, fit from 64x48 and 128x96 %.0f (%+.3f %%)\n", w, h,
+                    static_cast<unsigned long long>(actual), predicted, 100.0 * (predicted - double(actual)) / double(actual));
+        EXPECT_EQ(*measured, actual) << w << "x" << h;
+
+        rhi::Capabilities limits = device->capabilities();
+        limits.deviceMemoryBytes = 0;
+        limits.maxAllocationBytes = actual;
+        EXPECT_TRUE(sample::checkFrameFitsDevice(*device, *module, w, h, limits)) << w << "x" << h;
+        limits.maxAllocationBytes = actual - 1;
+        Status refused = sample::checkFrameFitsDevice(*device, *module, w, h, limits);
+        EXPECT_FALSE(refused) << w << "x" << h;
+        EXPECT_NE(refused.message().find("render-graph transient heap"), std::string::npos) << refused.message();
+
+        limits.maxAllocationBytes = 0;
+        limits.deviceMemoryBytes = actual + sample::persistentFrameBytes(*device, w, h, module->settings());
+        EXPECT_TRUE(sample::checkFrameFitsDevice(*device, *module, w, h, limits)) << w << "x" << h;
+        limits.deviceMemoryBytes -= 1;
+        refused = sample::checkFrameFitsDevice(*device, *module, w, h, limits);
+        EXPECT_FALSE(refused) << w << "x" << h;
+        EXPECT_NE(refused.message().find("of device memory"), std::string::npos) << refused.message();
     }
 }
 
