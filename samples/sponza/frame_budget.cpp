@@ -20,9 +20,11 @@ constexpr uint64_t kHdrReadbackBytesPerPixel = 16;   // RGBA32F: the largest sin
 // structure without creating it, so only its instance descriptors (64 bytes each) are counted.
 constexpr uint64_t kSphereInstanceBytes = 64;
 
-std::string gib(uint64_t bytes) {
+// A size for a message: GiB from 1 GiB up, MiB below (a 4 MiB hit buffer is not "0.0 GiB").
+std::string sizeText(uint64_t bytes) {
     char text[32];
-    std::snprintf(text, sizeof(text), "%.1f GiB", double(bytes) / double(1ull << 30));
+    if (bytes >= (1ull << 30)) std::snprintf(text, sizeof(text), "%.1f GiB", double(bytes) / double(1ull << 30));
+    else std::snprintf(text, sizeof(text), "%.1f MiB", double(bytes) / double(1ull << 20));
     return text;
 }
 
@@ -62,7 +64,7 @@ Result<GraphMemory> frameGraphMemory(rhi::IDevice& device, CausticsModule& modul
         if (bytes == 0)
             return makeError("frame memory: with these settings the device cannot create the render graph's " +
                              std::string(buffer ? "buffer '" : "texture '") + r.name + "'" +
-                             (buffer ? " of " + gib(plan.bufferDescs[i].byteSize) : std::string()) + " (" +
+                             (buffer ? " of " + sizeText(plan.bufferDescs[i].byteSize) : std::string()) + " (" +
                              device.capabilities().adapterName + ")");
         m.transients.emplace_back(r.name, bytes);
     }
@@ -78,9 +80,9 @@ Status checkFrameSize(const rhi::Capabilities& caps, uint32_t width, uint32_t he
                          std::to_string(caps.maxTextureDimension2D) + " (" + caps.adapterName + ")");
     uint64_t readback = kHdrReadbackBytesPerPixel * width * height;
     if (caps.maxAllocationBytes && readback > caps.maxAllocationBytes)
-        return makeError("--width/--height: " + size + " needs a " + gib(readback) +
+        return makeError("--width/--height: " + size + " needs a " + sizeText(readback) +
                          " read-back buffer, more than the device's largest allocation " +
-                         gib(caps.maxAllocationBytes) + " (" + caps.adapterName + ")");
+                         sizeText(caps.maxAllocationBytes) + " (" + caps.adapterName + ")");
     return okStatus();
 }
 
@@ -146,16 +148,16 @@ Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32
     std::string size = std::to_string(width) + "x" + std::to_string(height);
     if (limits.maxAllocationBytes && heap > limits.maxAllocationBytes) {
         CAUSTICS_TRY(FrameMemory fit, measureFrameMemory(device, module));
-        return makeError("frame memory: " + size + " with these settings needs a " + gib(heap) + " render-graph transient heap (one allocation; " +
-                         "largest fixed part: " + fit.largestFixed + " " + gib(fit.largestFixedBytes) +
-                         "), more than the device's largest allocation " + gib(limits.maxAllocationBytes) + " (" +
+        return makeError("frame memory: " + size + " with these settings needs a " + sizeText(heap) + " render-graph transient heap (one allocation; " +
+                         "largest fixed part: " + fit.largestFixed + " " + sizeText(fit.largestFixedBytes) +
+                         "), more than the device's largest allocation " + sizeText(limits.maxAllocationBytes) + " (" +
                          limits.adapterName + ")");
     }
     uint64_t frame = heap + persistentFrameBytes(device, width, height, module.settings());
     if (limits.deviceMemoryBytes && frame > limits.deviceMemoryBytes)
         return makeError("--width/--height: " + size + " needs " +
-                         gib(frame) + " of device memory (measured from the frame's render graph), more than the " +
-                         gib(limits.deviceMemoryBytes) + " the device has (" + limits.adapterName + ")");
+                         sizeText(frame) + " of device memory (measured from the frame's render graph), more than the " +
+                         sizeText(limits.deviceMemoryBytes) + " the device has (" + limits.adapterName + ")");
     return okStatus();
 }
 
