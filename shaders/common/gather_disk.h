@@ -22,8 +22,8 @@ CAUSTICS_CONST float kWallProbeCosHalfStep = 0.923879532511287f;  // cos(pi / 8)
 // footprint's area goes to zero while its length does not (a pixel there sees a thin strip of the
 // receiver, second-order terms the differential leaves out). The footprint width never drops below this
 // fraction of the footprint's major axis, so the disk keeps about the photons an ordinary pixel of that
-// length gathers; footprints less elongated than 1 : 1 / kFoldMinorFraction^2 = 1 : 4 are untouched
-// (docs/physics.md "Second-type density estimate", "Folds").
+// length gathers; footprints less elongated than 1 : 1 / kFoldMinorFraction^2 = 1 : 16 are untouched
+// (docs/physics.md "Folds of the camera path": half the axis blurred the water glass's focal spike).
 CAUSTICS_CONST float kFoldMinorFraction = 0.25f;
 
 struct GatherRadiusLimits {
