@@ -199,6 +199,9 @@ void expectOneFilteredFrameWithoutHoles(rhi::IDevice& device, const IndependentC
     CausticsSettings s = secondTypeSettings(512, 1.0f);
     s.filter = true;
     s.filterSecondTypeApart = true;
+    // Filter knobs for measuring (docs/physics.md "One frame"); the tests run the defaults.
+    s.atrousIterations = envOr("CAUSTICS_INDEPENDENT_ATROUS_ITERATIONS", s.atrousIterations);
+    s.filterLuminanceSigma = float(envOr("CAUSTICS_INDEPENDENT_SIGMA_PERCENT", uint32_t(100.0f * s.filterLuminanceSigma))) / 100.0f;
     s.seed = seedOffset() + 1;
     auto filtered = runCaustics(device, c.module, c.camera, kSize, kSize, s);
     ASSERT_TRUE(filtered) << filtered.message();
