@@ -36,8 +36,9 @@ struct GraphMemory {
 // The module's frame graph at width x height, built and compiled against the device's memory
 // requirements; never executed.
 Status compileFrameGraph(rg::RenderGraph& graph, rhi::IDevice& device, CausticsModule& module, uint32_t width,
-                         uint32_t height) {
+                         uint32_t height, uint32_t frameIndex = 0) {
     FrameInputs in;
+    in.frameIndex = frameIndex;
     in.camera = cameraViewMatrices(scene::Camera{}, width, height);
     in.width = width;
     in.height = height;
@@ -48,9 +49,10 @@ Status compileFrameGraph(rg::RenderGraph& graph, rhi::IDevice& device, CausticsM
 }
 
 // Its memory: the aliased heap and the heap-placed transients.
-Result<GraphMemory> frameGraphMemory(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
+Result<GraphMemory> frameGraphMemory(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height,
+                                     uint32_t frameIndex = 0) {
     rg::RenderGraph graph;
-    CAUSTICS_CHECK(compileFrameGraph(graph, device, module, width, height));
+    CAUSTICS_CHECK(compileFrameGraph(graph, device, module, width, height, frameIndex));
     const rg::CompiledPlan& plan = *graph.plan();
     GraphMemory m;
     m.heap = plan.heapSize;
@@ -102,8 +104,9 @@ uint64_t persistentFrameBytes(rhi::IDevice& device, uint32_t width, uint32_t hei
     return bytes;
 }
 
-Result<uint64_t> frameHeapBytes(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
-    CAUSTICS_TRY(GraphMemory graph, frameGraphMemory(device, module, width, height));
+Result<uint64_t> frameHeapBytes(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height,
+                                uint32_t nextFrameIndex) {
+    CAUSTICS_TRY(GraphMemory graph, frameGraphMemory(device, module, width, height, nextFrameIndex));
     return graph.heap;
 }
 
@@ -137,14 +140,11 @@ Result<std::vector<MemoryEntry>> moduleFrameReport(rhi::IDevice& device, Caustic
     return report;
 }
 
-Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height) {
-    return checkFrameFitsDevice(device, module, width, height, device.capabilities());
-}
-
 Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height,
-                            const rhi::Capabilities& limits) {
+                            uint32_t nextFrameIndex, const rhi::Capabilities* limitsOrNull) {
+    const rhi::Capabilities& limits = limitsOrNull ? *limitsOrNull : device.capabilities();
     CAUSTICS_CHECK(checkFrameSize(limits, width, height));
-    CAUSTICS_TRY(uint64_t heap, frameHeapBytes(device, module, width, height));
+    CAUSTICS_TRY(uint64_t heap, frameHeapBytes(device, module, width, height, nextFrameIndex));
     std::string size = std::to_string(width) + "x" + std::to_string(height);
     if (limits.maxAllocationBytes && heap > limits.maxAllocationBytes) {
         CAUSTICS_TRY(FrameMemory fit, measureFrameMemory(device, module));

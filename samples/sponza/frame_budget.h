@@ -29,7 +29,8 @@ uint64_t persistentFrameBytes(rhi::IDevice& device, uint32_t width, uint32_t hei
 // against the device's memory requirements (each resource created unbound, never executed). Exact on
 // any device, where a fit from small sizes is not (docs/viewer.md "Device limits"). An error names a
 // resource the device cannot create.
-Result<uint64_t> frameHeapBytes(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height);
+Result<uint64_t> frameHeapBytes(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height,
+                                uint32_t nextFrameIndex = 0);
 
 // Builds the module's frame graph at two small sizes (built and compiled against the device's memory
 // requirements, never executed: the module commits nothing) and fits the transient heap's size, which
@@ -45,10 +46,11 @@ Result<std::vector<MemoryEntry>> moduleFrameReport(rhi::IDevice& device, Caustic
 
 // checkFrameSize, then the frame's graph at this very size (frameHeapBytes): the transient heap (one
 // allocation) against the largest allocation, and the whole frame against the device-local heap, both
-// against `limits` (the device's own capabilities unless given). Errors name the size, the limit and,
-// for the heap, its largest fixed part (measureFrameMemory).
-Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height);
+// against `limits` (the device's own capabilities when null). Errors name the size, the limit and, for
+// the heap, its largest fixed part (measureFrameMemory). `nextFrameIndex`: the frame the host renders
+// next; the sizing graph is built for it, so that frame's own build undoes it (a graph built and dropped
+// changes nothing only when the next build is for the same or an earlier frame, docs/embedding.md).
 Status checkFrameFitsDevice(rhi::IDevice& device, CausticsModule& module, uint32_t width, uint32_t height,
-                            const rhi::Capabilities& limits);
+                            uint32_t nextFrameIndex = 0, const rhi::Capabilities* limits = nullptr);
 
 }  // namespace caustics::sample

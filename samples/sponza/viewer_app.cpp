@@ -82,7 +82,7 @@ Status applyEdits(ViewerContext& v) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(v.window, &width, &height);
     if (width > 0 && height > 0 && (uint32_t(width) != v.state.width || uint32_t(height) != v.state.height)) {
-        CAUSTICS_CHECK(checkFrameFitsDevice(*v.device, **v.module, uint32_t(width), uint32_t(height)));
+        CAUSTICS_CHECK(checkFrameFitsDevice(*v.device, **v.module, uint32_t(width), uint32_t(height), v.state.frame));
         v.state.width = uint32_t(width);
         v.state.height = uint32_t(height);
         v.renderer.reset();

@@ -65,17 +65,17 @@ TEST_F(FrameMemory, CheckMeasuresTheHeapAtTheCheckedSizeAndHoldsItToTheByte) {
         rhi::Capabilities limits = device->capabilities();
         limits.deviceMemoryBytes = 0;
         limits.maxAllocationBytes = actual;
-        EXPECT_TRUE(sample::checkFrameFitsDevice(*device, *module, w, h, limits)) << w << "x" << h;
+        EXPECT_TRUE(sample::checkFrameFitsDevice(*device, *module, w, h, 0, &limits)) << w << "x" << h;
         limits.maxAllocationBytes = actual - 1;
-        Status refused = sample::checkFrameFitsDevice(*device, *module, w, h, limits);
+        Status refused = sample::checkFrameFitsDevice(*device, *module, w, h, 0, &limits);
         EXPECT_FALSE(refused) << w << "x" << h;
         EXPECT_NE(refused.message().find("render-graph transient heap"), std::string::npos) << refused.message();
 
         limits.maxAllocationBytes = 0;
         limits.deviceMemoryBytes = actual + sample::persistentFrameBytes(*device, w, h, module->settings());
-        EXPECT_TRUE(sample::checkFrameFitsDevice(*device, *module, w, h, limits)) << w << "x" << h;
+        EXPECT_TRUE(sample::checkFrameFitsDevice(*device, *module, w, h, 0, &limits)) << w << "x" << h;
         limits.deviceMemoryBytes -= 1;
-        refused = sample::checkFrameFitsDevice(*device, *module, w, h, limits);
+        refused = sample::checkFrameFitsDevice(*device, *module, w, h, 0, &limits);
         EXPECT_FALSE(refused) << w << "x" << h;
         EXPECT_NE(refused.message().find("of device memory"), std::string::npos) << refused.message();
     }

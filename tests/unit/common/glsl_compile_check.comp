@@ -59,6 +59,6 @@ void main() {
     limits.maxMagnification = 10.0f;
     limits.minRadius = 1e-4f;
     limits.maxRadius = 1.0f;
-    float g = gatherDiskRadius(rayFootprintArea(rd), 0.01f, limits) + (insideGatherDisk(dir, t, onb.n, 0.5f) ? 1.0f : 0.0f);
+    float g = gatherDiskRadius(rayFootprintArea(rd), rayFootprintMajorAxis(rd), 0.01f, limits) + (insideGatherDisk(dir, t, onb.n, 0.5f) ? 1.0f : 0.0f);
     values[id] = float4(c, f + w + e + g + (ok ? 1.0f : 0.0f) + ggxD(0.9f, 0.1f));
 }
