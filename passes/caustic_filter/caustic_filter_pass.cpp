@@ -248,10 +248,18 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     const uint32_t w = f.width, h = f.height;
     const GBuffer& g = f.in->gbuffer;
     // The view's history (caustic_passes.h): valid only after an executed frame of this view. A
-    // previous build that never executed and is superseded (same or earlier frame) is undone first.
+    // previous build that never executed is undone first when it is superseded (this build is for the
+    // same or an earlier frame), or when it was for a frame before the last executed one and this build
+    // is for a later one: a graph a host built for sizing with a stale frame number and dropped (a build
+    // ahead is for a later frame than the last executed; a count restarted with resetHistory stays below
+    // it until it passes it).
     CausticViewHistory& vh = *f.history;
     const uint32_t frameIndex = f.in->frameIndex;
-    if (vh.lastBuiltFrame && vh.lastBuiltFrame != vh.lastExecutedFrame && frameIndex <= *vh.lastBuiltFrame) {
+    const bool stale = vh.lastExecutedFrame && vh.lastBuiltFrame && *vh.lastBuiltFrame < *vh.lastExecutedFrame &&
+                       frameIndex > *vh.lastExecutedFrame;
+    const bool dropped = vh.lastBuiltFrame && vh.lastBuiltFrame != vh.lastExecutedFrame &&
+                         (frameIndex <= *vh.lastBuiltFrame || stale);
+    if (dropped) {
         vh.builtParity = vh.parityBeforeLastBuild;
         vh.builtValid = vh.validBeforeLastBuild;
     }

@@ -115,8 +115,7 @@ Status ensureFilterHistory(CausticResources::Impl& res, CausticViewHistory& h, u
     h.width = width;
     h.height = height;
     h.valid = h.builtValid = false;
-    h.lastBuiltFrame.reset();
-    h.lastExecutedFrame.reset();
+    h.lastBuiltFrame.reset();   // the last executed frame stays: a later build for an earlier frame was dropped
     std::fill(h.tileCountRecorded.begin(), h.tileCountRecorded.end(), uint8_t(0));
     return okStatus();
 }

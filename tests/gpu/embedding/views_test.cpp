@@ -106,6 +106,41 @@ TEST_F(Views, GraphBuiltButNotExecutedLeavesTheHistoryAlone) {
     EXPECT_FALSE(view.value()->impl().lastViewProj.has_value()) << "built, not executed: no previous matrix";
 }
 
+// A host that sizes a frame at a new image size by building a graph it drops, with a stale frame number
+// (the sample's viewer did: frame 0 after frames 0..3), then renders the next frame at that size: the
+// dropped build made the new history look written, and the next frame read it in UNDEFINED layout (12
+// validation errors before the fix, which fail this fixture). The next frame must be what it is without
+// the dropped build: measured identical (relative L1 0 on lavapipe; bound kViewBound, the float-atomic
+// order's noise of the test above).
+TEST_F(Views, DroppedSizingBuildWithAStaleFrameNumberLeavesTheResizedHistoryUnwritten) {
+    constexpr uint32_t kResized = 40, kFramesBefore = 4, kFramesAll = 6;
+    scene::Scene scene = spotSphereScene();
+    auto gpuScene = scene::GpuScene::create(*device, scene);
+    ASSERT_TRUE(gpuScene) << gpuScene.message();
+    auto run = [&](bool sizingBuild) -> Result<FrameImage> {
+        CAUSTICS_TRY(auto module, CausticsModule::create(device, scene, gpuScene.value(), filteredSettings()));
+        CAUSTICS_TRY(auto frames, runModuleFrames(*device, *module, kFramesAll, 1, [&](uint32_t n) {
+            const uint32_t size = n < kFramesBefore ? kSize : kResized;
+            if (sizingBuild && n == kFramesBefore) {
+                rg::RenderGraph dropped;
+                FrameInputs stale = viewOf(spotSphereCamera(), kResized).inputs;
+                stale.frameIndex = 0;
+                EXPECT_TRUE(module->addPasses(dropped, stale));
+            }
+            return std::vector<ViewRequest>{viewOf(spotSphereCamera(), size)};
+        }));
+        return frames.back()[0];
+    };
+    auto plain = run(false);
+    ASSERT_TRUE(plain) << plain.message();
+    auto sized = run(true);
+    ASSERT_TRUE(sized) << sized.message();
+    const double difference = relativeL1(sized.value(), plain.value());
+    std::printf("[ measured ] last frame after a dropped sizing build vs without: %.3g\n", difference);
+    EXPECT_EQ(sized.value().width, kResized);
+    EXPECT_LT(difference, kViewBound);
+}
+
 // Measured (lavapipe 2026-11-30): 5 in flight vs 1 in flight over 8 frames of a moving scene, worst
 // frame 1.7e-8 to 1.4e-7 over three runs (float-atomic summation order); first vs last frame of the run
 // 1.21. On the H200 (2026-12-02, the caster-motion filter on: the moving sphere's history is kept and
