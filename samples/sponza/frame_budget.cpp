@@ -2,7 +2,6 @@
 
 #include "caustics/sphere_capacity.h"
 
-#include <cmath>
 #include <cstdio>
 #include <string>
 #include <utility>
