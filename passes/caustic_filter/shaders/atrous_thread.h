@@ -108,9 +108,10 @@ void atrousThread(uint group, uint local) {
             uint slot = atrousSlot(q, tile, tap);
             if (slot == kFilterNoSlot) continue;
             int2 t = filterPoolTexel(slot, q);
+            // The guide with the colour, before the tests on either: the taps' fetches overlap.
             float4 c = CAUSTICS_TEXEL(inColor, t);
-            if (centreDark && atrousIsDark(c)) continue;   // neither hands anything to the other
             AtrousGuide g = atrousGuide(t);
+            if (centreDark && atrousIsDark(c)) continue;   // neither hands anything to the other
             if (g.id != centre.id) continue;
             uint code = atrousPackWeight(atrousPairWeight(tap, s, centre.depth, g.depth, centre.gradient, g.gradient, centre.normal,
                                                           g.normal, lp, filterLuminance(c.rgb), vp, c.a * c.a,

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 // Vulkan entry of caustics.temporal; the body is temporal.h (docs/shaders.md).
 #include "scene/camera.glsl"
 #include "temporal.h"

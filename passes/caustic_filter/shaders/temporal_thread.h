@@ -9,6 +9,13 @@
 #include "common/octahedral.h"
 #include "common/resources.h"
 
+// The rejection test's 3x3 loops unrolled (the GLSL entry enables GL_EXT_control_flow_attributes).
+#if defined(CAUSTICS_LANG_HLSL)
+#define TEMPORAL_UNROLL [unroll]
+#else
+#define TEMPORAL_UNROLL [[unroll]]
+#endif
+
 // The history guides, one RG32UI texel (docs/caustics.md "History and guides"): x the linear depth and
 // the history length n (2 x half: 11 significant bits, exact integers up to 2048 > kMaxFilterHistory),
 // y the octahedral normal (2 x unorm8) and the object id's low 16 bits. Only the next frame's
@@ -57,12 +64,6 @@ int2 temporalHistoryTexel(int2 q) {
     return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, q);
 }
 
-// E[l], per-frame variance of l, n of a history texel (this frame's pre-exposed units).
-float3 temporalHistoryMoments(int2 h, FilterGuide g) {
-    float4 c = CAUSTICS_TEXEL(historyColor, h) * params.historyScale;
-    return float3(filterLuminance(c.rgb), c.a * c.a, g.historyLength);
-}
-
 // True when this frame's caustic around p is inconsistent with the history (the caustic moved: a light or
 // an object moved, which the camera reprojection cannot follow): over the 3x3 taps of this object (history
 // texels nearest to the reprojected point, offset alike) the sums of this frame's luminance C and of the
@@ -72,20 +73,22 @@ float3 temporalHistoryMoments(int2 h, FilterGuide g) {
 // history was dark start a new one; stray photons do not.
 bool temporalHistoryRejected(int2 p, int2 nearest, int2 size, uint id) {
     float c = 0.0f, h = 0.0f, v = 0.0f, quantum = 0.0f;
-    for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
+    TEMPORAL_UNROLL for (int dy = -1; dy <= 1; ++dy) {
+        TEMPORAL_UNROLL for (int dx = -1; dx <= 1; ++dx) {
             int2 q = p + int2(dx, dy), hq = nearest + int2(dx, dy);
             if (!filterInside(q, size.x, size.y) || !filterInside(hq, size.x, size.y)) continue;
-            if (CAUSTICS_TEXEL_UINT(gObjectId, q) != id) continue;
             int2 ht = temporalHistoryTexel(hq);
             if (ht.x < 0) continue;
-            FilterGuide g = filterUnpackGuide(CAUSTICS_TEXEL(historyGuides, ht).xy);
-            if (g.id != filterGuideId(id)) continue;
+            // Every texel the tap may need is fetched before any test on them: the fetches of the nine
+            // taps overlap instead of waiting on each other (docs/caustics.md "Cost").
+            uint objectId = CAUSTICS_TEXEL_UINT(gObjectId, q);
+            uint2 guide = CAUSTICS_TEXEL(historyGuides, ht).xy;
+            float4 history = CAUSTICS_TEXEL(historyColor, ht) * params.historyScale;
             float l = filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure);
-            float3 m = temporalHistoryMoments(ht, g);
+            if (objectId != id || (guide.y >> 16) != filterGuideId(id)) continue;
             c += l;
-            h += m.x;
-            v += m.y;
+            h += filterLuminance(history.rgb);
+            v += history.a * history.a;
             if (l > 0.0f) quantum = quantum > 0.0f ? min(quantum, l) : l;
         }
     }
@@ -208,21 +211,23 @@ void temporalThread(uint group, uint2 local) {
                                                                       normalize(camera.eye.xyz - world));
             float3 hColor = float3(0.0f, 0.0f, 0.0f), hMoments = float3(0.0f, 0.0f, 0.0f);
             float wSum = 0.0f;
-            for (int i = 0; i < 4; ++i) {
+            TEMPORAL_UNROLL for (int i = 0; i < 4; ++i) {
                 int2 o = int2(i & 1, i >> 1);
                 int2 q = base + o;
                 if (!filterInside(q, size.x, size.y)) continue;
                 int2 ht = temporalHistoryTexel(q);
                 if (ht.x < 0) continue;
+                // The colour with the guide, before the tests on the guide (as in temporalHistoryRejected).
                 FilterGuide hg = filterUnpackGuide(CAUSTICS_TEXEL(historyGuides, ht).xy);
+                float4 history = CAUSTICS_TEXEL(historyColor, ht) * params.historyScale;
                 if (hg.id != filterGuideId(id)) continue;
                 if (abs(hg.depth - clip.w) > tolerance) continue;
                 if (dot(hg.normal, n) < 0.9f) continue;
                 float w = (o.x == 1 ? f.x : 1.0f - f.x) * (o.y == 1 ? f.y : 1.0f - f.y);
-                hColor += w * CAUSTICS_TEXEL(historyColor, ht).rgb * params.historyScale;
+                hColor += w * history.rgb;
                 // Per-tap variance, not the moments: mixing the moments of neighbouring texels would add
                 // their signal difference (a focal spot's edge) to the variance.
-                hMoments += w * temporalHistoryMoments(ht, hg);
+                hMoments += w * float3(filterLuminance(history.rgb), history.a * history.a, hg.historyLength);
                 wSum += w;
             }
             // The test needs variances from the moments: histories shorter than kTemporalTrustedHistory
