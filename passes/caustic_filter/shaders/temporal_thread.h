@@ -58,6 +58,29 @@ uint4 filterPackAtrousGuide(float depth, float3 n, uint id, float2 gradZ) {
     return uint4(filterFloatToBits(depth), q.x | (q.y << 16), id, filterPackHalf2(gradZ));
 }
 
+// This frame's object id, pre-exposed luminance and linear depth over the group's tile and a one-pixel
+// apron (10 x 10), loaded once per group: the rejection test's 3x3 and the depth slopes read them there
+// instead of fetching each texel up to nine times per group (docs/caustics.md "Cost").
+CAUSTICS_CONST int kTemporalRegion = kFilterTileSize + 2;
+FILTER_GROUPSHARED uint sTemporalId[kTemporalRegion * kTemporalRegion];
+FILTER_GROUPSHARED float sTemporalLuminance[kTemporalRegion * kTemporalRegion];
+FILTER_GROUPSHARED float sTemporalDepth[kTemporalRegion * kTemporalRegion];
+
+// The region's index of screen pixel q (within one pixel of the tile whose first pixel is `origin`).
+int temporalRegionIndex(int2 q, int2 origin) { return (q.y - origin.y + 1) * kTemporalRegion + (q.x - origin.x + 1); }
+
+// Fills the region (id 0 outside the view); every thread of the group calls it (a barrier).
+void temporalLoadRegion(int2 origin, uint local, int2 size) {
+    for (uint i = local; i < uint(kTemporalRegion * kTemporalRegion); i += kFilterGroupThreads) {
+        int2 q = origin - int2(1, 1) + int2(int(i) % kTemporalRegion, int(i) / kTemporalRegion);
+        bool inside = filterInside(q, size.x, size.y);
+        sTemporalId[i] = inside ? CAUSTICS_TEXEL_UINT(gObjectId, q) : 0u;
+        sTemporalLuminance[i] = inside ? filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure) : 0.0f;
+        sTemporalDepth[i] = inside ? CAUSTICS_TEXEL(gLinearDepth, q).r : 0.0f;
+    }
+    FILTER_BARRIER();
+}
+
 // Last frame's pool texel of screen texel q, or (-1, -1) where its tile kept no history.
 int2 temporalHistoryTexel(int2 q) {
     uint slot = CAUSTICS_TEXEL_UINT(previousSlots, filterTileOfPixel(q));
@@ -71,7 +94,7 @@ int2 temporalHistoryTexel(int2 q) {
 // variances, temporal moments) plus 2 photons (q, the smallest non-zero luminance of this frame in the
 // 3x3): a caustic of ~1 photon per pixel per frame that leaves is caught in one frame, 3 photons where the
 // history was dark start a new one; stray photons do not.
-bool temporalHistoryRejected(int2 p, int2 nearest, int2 size, uint id) {
+bool temporalHistoryRejected(int2 p, int2 origin, int2 nearest, int2 size, uint id) {
     float c = 0.0f, h = 0.0f, v = 0.0f, quantum = 0.0f;
     TEMPORAL_UNROLL for (int dy = -1; dy <= 1; ++dy) {
         TEMPORAL_UNROLL for (int dx = -1; dx <= 1; ++dx) {
@@ -79,13 +102,13 @@ bool temporalHistoryRejected(int2 p, int2 nearest, int2 size, uint id) {
             if (!filterInside(q, size.x, size.y) || !filterInside(hq, size.x, size.y)) continue;
             int2 ht = temporalHistoryTexel(hq);
             if (ht.x < 0) continue;
-            // Every texel the tap may need is fetched before any test on them: the fetches of the nine
-            // taps overlap instead of waiting on each other (docs/caustics.md "Cost").
-            uint objectId = CAUSTICS_TEXEL_UINT(gObjectId, q);
+            // Both history texels are fetched before any test on them: the nine taps' fetches overlap
+            // instead of waiting on each other (docs/caustics.md "Cost").
             uint2 guide = CAUSTICS_TEXEL(historyGuides, ht).xy;
             float4 history = CAUSTICS_TEXEL(historyColor, ht) * params.historyScale;
-            float l = filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure);
-            if (objectId != id || (guide.y >> 16) != filterGuideId(id)) continue;
+            int r = temporalRegionIndex(q, origin);
+            if (sTemporalId[r] != id || (guide.y >> 16) != filterGuideId(id)) continue;
+            float l = sTemporalLuminance[r];
             c += l;
             h += filterLuminance(history.rgb);
             v += history.a * history.a;
@@ -97,13 +120,13 @@ bool temporalHistoryRejected(int2 p, int2 nearest, int2 size, uint id) {
 
 // Screen-space derivative of linear depth along `axis`: the smaller one-sided difference on the same
 // object, so a neighbour across a depth edge does not make the a-trous plane test lenient.
-float temporalDepthSlope(int2 p, int2 axis, int2 size, float z, uint id) {
+float temporalDepthSlope(int2 p, int2 origin, int2 axis, int2 size, float z, uint id) {
     float slope = 3.0e38f;
     int2 ahead = p + axis, behind = p - axis;
-    if (filterInside(ahead, size.x, size.y) && CAUSTICS_TEXEL_UINT(gObjectId, ahead) == id)
-        slope = CAUSTICS_TEXEL(gLinearDepth, ahead).r - z;
-    if (filterInside(behind, size.x, size.y) && CAUSTICS_TEXEL_UINT(gObjectId, behind) == id) {
-        float back = z - CAUSTICS_TEXEL(gLinearDepth, behind).r;
+    int a = temporalRegionIndex(ahead, origin), b = temporalRegionIndex(behind, origin);
+    if (filterInside(ahead, size.x, size.y) && sTemporalId[a] == id) slope = sTemporalDepth[a] - z;
+    if (filterInside(behind, size.x, size.y) && sTemporalId[b] == id) {
+        float back = z - sTemporalDepth[b];
         if (abs(back) < abs(slope)) slope = back;
     }
     return slope < 3.0e38f ? slope : 0.0f;
@@ -168,8 +191,10 @@ float3 temporalCatmullRom(int2 base, float2 f, uint id, float3 bilinear) {
 }
 
 void temporalThread(uint group, uint2 local) {
-    int2 p = filterTileOf(tilesLoad(group)) * kFilterTileSize + int2(local);
+    int2 origin = filterTileOf(tilesLoad(group)) * kFilterTileSize;
+    int2 p = origin + int2(local);
     int2 size = int2(camera.frame.xy);
+    temporalLoadRegion(origin, local.y * uint(kFilterTileSize) + local.x, size);
     if (!filterInside(p, size.x, size.y)) return;
     int2 pool = filterPoolTexel(group, p);
     float3 cur = CAUSTICS_TEXEL(current, p).rgb * params.preExposure;
@@ -233,7 +258,7 @@ void temporalThread(uint group, uint2 local) {
             // The test needs variances from the moments: histories shorter than kTemporalTrustedHistory
             // frames are short already (their lag is at most that long).
             bool rejected = wSum > 0.01f && hMoments.z / wSum >= kTemporalTrustedHistory &&
-                            temporalHistoryRejected(p, int2(floor(prev + 0.5f)), size, id);
+                            temporalHistoryRejected(p, origin, int2(floor(prev + 0.5f)), size, id);
             if (wSum > 0.01f && !rejected) {
                 hColor /= wSum;
                 if (carried && wSum > 0.999f) hColor = temporalCatmullRom(base, f, id, hColor);
@@ -250,7 +275,7 @@ void temporalThread(uint group, uint2 local) {
     // has the range of the radiance, which half precision holds (docs/caustics.md "Memory").
     float lm = filterLuminance(color);
     float deviation = sqrt(max(0.0f, moment2 - lm * lm));
-    float2 gradZ = float2(temporalDepthSlope(p, int2(1, 0), size, depth, id), temporalDepthSlope(p, int2(0, 1), size, depth, id));
+    float2 gradZ = float2(temporalDepthSlope(p, origin, int2(1, 0), size, depth, id), temporalDepthSlope(p, origin, int2(0, 1), size, depth, id));
     CAUSTICS_IMAGE_STORE(outColor, pool, filterNearestHalf4(float4(color, deviation)));
     uint2 guide = filterPackGuide(depth, historyLength, n, id);
 #if defined(CAUSTICS_LANG_HLSL)
