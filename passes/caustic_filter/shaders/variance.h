@@ -52,17 +52,42 @@ int2 variancePoolTexel(int2 q) {
 // (filterPackGuide, temporal_thread.h).
 float varianceHistoryLength(int2 t) { return filterUnpackHalf2(CAUSTICS_TEXEL(temporalGuides, t).x).y; }
 
+// This frame's object id and, where the pixel has a pool texel, its temporal result's luminance and
+// per-frame variance, over the group's tile and a one-pixel apron (10 x 10), loaded once per group: the 3x3
+// means below read them there instead of fetching each texel up to nine times per group (docs/caustics.md
+// "Cost"). A pixel without a pool texel counts as zero.
+CAUSTICS_CONST int kVarianceRegion = kFilterTileSize + 2;
+FILTER_GROUPSHARED uint sVarianceId[kVarianceRegion * kVarianceRegion];
+FILTER_GROUPSHARED float sVarianceLuminance[kVarianceRegion * kVarianceRegion];
+FILTER_GROUPSHARED float sVarianceVariance[kVarianceRegion * kVarianceRegion];
+
+// The region's index of screen pixel q (within one pixel of the tile whose first pixel is `origin`).
+int varianceRegionIndex(int2 q, int2 origin) { return (q.y - origin.y + 1) * kVarianceRegion + (q.x - origin.x + 1); }
+
+// Fills the region (id 0 outside the view); every thread of the group calls it (a barrier).
+void varianceLoadRegion(int2 origin, uint local) {
+    for (uint i = local; i < uint(kVarianceRegion * kVarianceRegion); i += kFilterGroupThreads) {
+        int2 q = origin - int2(1, 1) + int2(int(i) % kVarianceRegion, int(i) / kVarianceRegion);
+        bool inside = filterInside(q, params.width, params.height);
+        int2 t = inside ? variancePoolTexel(q) : int2(-1, -1);
+        float4 c = t.x >= 0 ? CAUSTICS_TEXEL(temporalColor, t) : float4(0.0f, 0.0f, 0.0f, 0.0f);
+        sVarianceId[i] = inside ? CAUSTICS_TEXEL_UINT(gObjectId, q) : 0u;
+        sVarianceLuminance[i] = filterLuminance(c.rgb);
+        sVarianceVariance[i] = c.a * c.a;
+    }
+    FILTER_BARRIER();
+}
+
 // 3x3 mean of the neighbours' temporal variance on the same object (SVGF prefilters the variance the
 // same way): a pixel's own moments from a few photons per frame estimate its variance poorly.
-float varianceLocalMeanTemporal(int2 p, uint id) {
+float varianceLocalMeanTemporal(int2 p, int2 origin, uint id) {
     float sum = 0.0f, count = 0.0f;
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             int2 q = p + int2(dx, dy);
-            if (!filterInside(q, params.width, params.height) || CAUSTICS_TEXEL_UINT(gObjectId, q) != id) continue;
-            int2 t = variancePoolTexel(q);
-            float deviation = t.x >= 0 ? CAUSTICS_TEXEL(temporalColor, t).a : 0.0f;
-            sum += deviation * deviation;
+            int r = varianceRegionIndex(q, origin);
+            if (!filterInside(q, params.width, params.height) || sVarianceId[r] != id) continue;
+            sum += sVarianceVariance[r];
             count += 1.0f;
         }
     }
@@ -76,7 +101,7 @@ float variancePhotonWeight(int2 q) { return params.photonWeights != 0u ? CAUSTIC
 
 // Photon shot noise q E[l] for a short history (above). With photon weights w (the second type through
 // curved glass) the step is w_p times the smallest per-weight luminance l / w of the window.
-float varianceShotNoise(int2 p, uint id, float accumulatedLuminance) {
+float varianceShotNoise(int2 p, int2 origin, uint id, float accumulatedLuminance) {
     float quantum = 3.0e38f;
     float localSum = 0.0f, localCount = 0.0f;
     for (int dy = -3; dy <= 3; ++dy) {
@@ -87,8 +112,7 @@ float varianceShotNoise(int2 p, uint id, float accumulatedLuminance) {
             float w = variancePhotonWeight(q);
             if (l > 0.0f && w > 0.0f) quantum = min(quantum, l / w);
             if (abs(dx) <= 1 && abs(dy) <= 1) {
-                int2 t = variancePoolTexel(q);
-                if (t.x >= 0) localSum += filterLuminance(CAUSTICS_TEXEL(temporalColor, t).rgb);
+                localSum += sVarianceLuminance[varianceRegionIndex(q, origin)];
                 localCount += 1.0f;
             }
         }
@@ -102,7 +126,9 @@ float varianceShotNoise(int2 p, uint id, float accumulatedLuminance) {
 }
 
 void varianceThread(uint group, uint2 local) {
-    int2 p = filterTileOf(tilesLoad(group)) * kFilterTileSize + int2(local);
+    int2 origin = filterTileOf(tilesLoad(group)) * kFilterTileSize;
+    int2 p = origin + int2(local);
+    varianceLoadRegion(origin, local.y * uint(kFilterTileSize) + local.x);
     if (!filterInside(p, params.width, params.height)) return;
     // Every word the first pairs pass adds into or its shares pass reads is a listed pixel's in the view.
     weightSumsStore(filterPoolWord(0u, group, p), 0u);
@@ -111,8 +137,8 @@ void varianceThread(uint group, uint2 local) {
     float n = max(varianceHistoryLength(own), 1.0f);
     uint id = CAUSTICS_TEXEL_UINT(gObjectId, p);
     float variance = 0.0f;
-    if (id != 0u && n >= kVarianceTemporalHistory) variance = max(c.a * c.a, varianceLocalMeanTemporal(p, id));
-    else if (id != 0u) variance = varianceShotNoise(p, id, filterLuminance(c.rgb));
+    if (id != 0u && n >= kVarianceTemporalHistory) variance = max(c.a * c.a, varianceLocalMeanTemporal(p, origin, id));
+    else if (id != 0u) variance = varianceShotNoise(p, origin, id, filterLuminance(c.rgb));
     CAUSTICS_IMAGE_STORE(outColor, own, filterNearestHalf4(float4(c.rgb, varianceDeviationOfMean(variance, n))));
 }
 #endif
