@@ -36,6 +36,15 @@ CAUSTICS_FN uint filterPoolWord(uint base, uint slot, int2 p) {
 
 CAUSTICS_FN bool filterInside(int2 p, int width, int height) { return uint(p.x) < uint(width) && uint(p.y) < uint(height); }
 
+// A group's tile and a one-pixel apron, kFilterRegion^2 pixels: caustics.temporal and caustics.variance
+// copy what their 3x3 neighbourhoods read of it into group-shared memory once per group
+// (docs/caustics.md "Cost"). `origin` is the tile's first pixel; pixel q lies within one pixel of the tile.
+CAUSTICS_CONST int kFilterRegion = kFilterTileSize + 2;
+CAUSTICS_FN int filterRegionIndex(int2 q, int2 origin) { return (q.y - origin.y + 1) * kFilterRegion + (q.x - origin.x + 1); }
+CAUSTICS_FN int2 filterRegionPixel(uint i, int2 origin) {
+    return origin - int2(1, 1) + int2(int(i) % kFilterRegion, int(i) / kFilterRegion);
+}
+
 // The scalar whose moments and differences guide the filter (SVGF section 4.2): common/luminance.h.
 CAUSTICS_FN float filterLuminance(float3 c) { return rec709Luminance(c); }
 CAUSTICS_SHARED_END

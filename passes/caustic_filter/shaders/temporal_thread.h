@@ -58,21 +58,17 @@ uint4 filterPackAtrousGuide(float depth, float3 n, uint id, float2 gradZ) {
     return uint4(filterFloatToBits(depth), q.x | (q.y << 16), id, filterPackHalf2(gradZ));
 }
 
-// This frame's object id, pre-exposed luminance and linear depth over the group's tile and a one-pixel
-// apron (10 x 10), loaded once per group: the rejection test's 3x3 and the depth slopes read them there
-// instead of fetching each texel up to nine times per group (docs/caustics.md "Cost").
-CAUSTICS_CONST int kTemporalRegion = kFilterTileSize + 2;
-FILTER_GROUPSHARED uint sTemporalId[kTemporalRegion * kTemporalRegion];
-FILTER_GROUPSHARED float sTemporalLuminance[kTemporalRegion * kTemporalRegion];
-FILTER_GROUPSHARED float sTemporalDepth[kTemporalRegion * kTemporalRegion];
-
-// The region's index of screen pixel q (within one pixel of the tile whose first pixel is `origin`).
-int temporalRegionIndex(int2 q, int2 origin) { return (q.y - origin.y + 1) * kTemporalRegion + (q.x - origin.x + 1); }
+// This frame's object id, pre-exposed luminance and linear depth over the group's region (filter_common.h),
+// loaded once per group: the rejection test's 3x3 and the depth slopes read them there instead of
+// fetching each texel up to nine times per group (docs/caustics.md "Cost").
+FILTER_GROUPSHARED uint sTemporalId[kFilterRegion * kFilterRegion];
+FILTER_GROUPSHARED float sTemporalLuminance[kFilterRegion * kFilterRegion];
+FILTER_GROUPSHARED float sTemporalDepth[kFilterRegion * kFilterRegion];
 
 // Fills the region (id 0 outside the view); every thread of the group calls it (a barrier).
 void temporalLoadRegion(int2 origin, uint local, int2 size) {
-    for (uint i = local; i < uint(kTemporalRegion * kTemporalRegion); i += kFilterGroupThreads) {
-        int2 q = origin - int2(1, 1) + int2(int(i) % kTemporalRegion, int(i) / kTemporalRegion);
+    for (uint i = local; i < uint(kFilterRegion * kFilterRegion); i += kFilterGroupThreads) {
+        int2 q = filterRegionPixel(i, origin);
         bool inside = filterInside(q, size.x, size.y);
         sTemporalId[i] = inside ? CAUSTICS_TEXEL_UINT(gObjectId, q) : 0u;
         sTemporalLuminance[i] = inside ? filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure) : 0.0f;
@@ -106,7 +102,7 @@ bool temporalHistoryRejected(int2 p, int2 origin, int2 nearest, int2 size, uint 
             // instead of waiting on each other (docs/caustics.md "Cost").
             uint2 guide = CAUSTICS_TEXEL(historyGuides, ht).xy;
             float4 history = CAUSTICS_TEXEL(historyColor, ht) * params.historyScale;
-            int r = temporalRegionIndex(q, origin);
+            int r = filterRegionIndex(q, origin);
             if (sTemporalId[r] != id || (guide.y >> 16) != filterGuideId(id)) continue;
             float l = sTemporalLuminance[r];
             c += l;
@@ -123,7 +119,7 @@ bool temporalHistoryRejected(int2 p, int2 origin, int2 nearest, int2 size, uint 
 float temporalDepthSlope(int2 p, int2 origin, int2 axis, int2 size, float z, uint id) {
     float slope = 3.0e38f;
     int2 ahead = p + axis, behind = p - axis;
-    int a = temporalRegionIndex(ahead, origin), b = temporalRegionIndex(behind, origin);
+    int a = filterRegionIndex(ahead, origin), b = filterRegionIndex(behind, origin);
     if (filterInside(ahead, size.x, size.y) && sTemporalId[a] == id) slope = sTemporalDepth[a] - z;
     if (filterInside(behind, size.x, size.y) && sTemporalId[b] == id) {
         float back = z - sTemporalDepth[b];

@@ -53,21 +53,17 @@ int2 variancePoolTexel(int2 q) {
 float varianceHistoryLength(int2 t) { return filterUnpackHalf2(CAUSTICS_TEXEL(temporalGuides, t).x).y; }
 
 // This frame's object id and, where the pixel has a pool texel, its temporal result's luminance and
-// per-frame variance, over the group's tile and a one-pixel apron (10 x 10), loaded once per group: the 3x3
-// means below read them there instead of fetching each texel up to nine times per group (docs/caustics.md
+// per-frame variance, over the group's region (filter_common.h), loaded once per group: the 3x3 means
+// below read them there instead of fetching each texel up to nine times per group (docs/caustics.md
 // "Cost"). A pixel without a pool texel counts as zero.
-CAUSTICS_CONST int kVarianceRegion = kFilterTileSize + 2;
-FILTER_GROUPSHARED uint sVarianceId[kVarianceRegion * kVarianceRegion];
-FILTER_GROUPSHARED float sVarianceLuminance[kVarianceRegion * kVarianceRegion];
-FILTER_GROUPSHARED float sVarianceVariance[kVarianceRegion * kVarianceRegion];
-
-// The region's index of screen pixel q (within one pixel of the tile whose first pixel is `origin`).
-int varianceRegionIndex(int2 q, int2 origin) { return (q.y - origin.y + 1) * kVarianceRegion + (q.x - origin.x + 1); }
+FILTER_GROUPSHARED uint sVarianceId[kFilterRegion * kFilterRegion];
+FILTER_GROUPSHARED float sVarianceLuminance[kFilterRegion * kFilterRegion];
+FILTER_GROUPSHARED float sVarianceVariance[kFilterRegion * kFilterRegion];
 
 // Fills the region (id 0 outside the view); every thread of the group calls it (a barrier).
 void varianceLoadRegion(int2 origin, uint local) {
-    for (uint i = local; i < uint(kVarianceRegion * kVarianceRegion); i += kFilterGroupThreads) {
-        int2 q = origin - int2(1, 1) + int2(int(i) % kVarianceRegion, int(i) / kVarianceRegion);
+    for (uint i = local; i < uint(kFilterRegion * kFilterRegion); i += kFilterGroupThreads) {
+        int2 q = filterRegionPixel(i, origin);
         bool inside = filterInside(q, params.width, params.height);
         int2 t = inside ? variancePoolTexel(q) : int2(-1, -1);
         float4 c = t.x >= 0 ? CAUSTICS_TEXEL(temporalColor, t) : float4(0.0f, 0.0f, 0.0f, 0.0f);
@@ -85,7 +81,7 @@ float varianceLocalMeanTemporal(int2 p, int2 origin, uint id) {
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             int2 q = p + int2(dx, dy);
-            int r = varianceRegionIndex(q, origin);
+            int r = filterRegionIndex(q, origin);
             if (!filterInside(q, params.width, params.height) || sVarianceId[r] != id) continue;
             sum += sVarianceVariance[r];
             count += 1.0f;
@@ -112,7 +108,7 @@ float varianceShotNoise(int2 p, int2 origin, uint id, float accumulatedLuminance
             float w = variancePhotonWeight(q);
             if (l > 0.0f && w > 0.0f) quantum = min(quantum, l / w);
             if (abs(dx) <= 1 && abs(dy) <= 1) {
-                localSum += sVarianceLuminance[varianceRegionIndex(q, origin)];
+                localSum += sVarianceLuminance[filterRegionIndex(q, origin)];
                 localCount += 1.0f;
             }
         }
