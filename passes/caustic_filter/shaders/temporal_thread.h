@@ -34,6 +34,8 @@ uint2 filterPackGuide(float depth, float historyLength, float3 n, uint id) {
     uint2 q = uint2(round(clamp(e * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
     return uint2(filterPackHalf2(float2(depth, historyLength)), q.x | (q.y << 8) | ((id & 0xFFFFu) << 16));
 }
+// The object id's low 16 bits a packed guide holds (the rejection test reads only it, with the length).
+uint filterGuideStoredId(uint2 g) { return g.y >> 16; }
 FilterGuide filterUnpackGuide(uint2 g) {
     float2 dn = filterUnpackHalf2(g.x);
     float2 e = float2(float(g.y & 0xFFu), float((g.y >> 8) & 0xFFu)) / 255.0f * 2.0f - 1.0f;
@@ -44,7 +46,7 @@ FilterGuide filterUnpackGuide(uint2 g) {
     r.depth = dn.x;
     r.historyLength = dn.y;
     r.normal = normalize(n);
-    r.id = g.y >> 16;
+    r.id = filterGuideStoredId(g);
     return r;
 }
 uint filterGuideId(uint objectId) { return objectId & 0xFFFFu; }
@@ -103,7 +105,7 @@ bool temporalHistoryRejected(int2 p, int2 origin, int2 nearest, int2 size, uint 
             uint2 guide = CAUSTICS_TEXEL(historyGuides, ht).xy;
             float4 history = CAUSTICS_TEXEL(historyColor, ht) * params.historyScale;
             int r = filterRegionIndex(q, origin);
-            if (sTemporalId[r] != id || (guide.y >> 16) != filterGuideId(id)) continue;
+            if (sTemporalId[r] != id || filterGuideStoredId(guide) != filterGuideId(id)) continue;
             float l = sTemporalLuminance[r];
             c += l;
             h += filterLuminance(history.rgb);
