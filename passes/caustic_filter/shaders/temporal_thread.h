@@ -91,9 +91,9 @@ int2 temporalHistoryTexel(int2 q) {
 // history's mean H differ by more than 3 deviations of one frame's 3x3 sum (the taps' per-frame
 // variances, temporal moments) plus 2 photons (q, the smallest non-zero luminance of this frame in the
 // 3x3): a caustic of ~1 photon per pixel per frame that leaves is caught in one frame, 3 photons where the
-// history was dark start a new one; stray photons do not.
+// history was dark start a new one; stray photons do not; nor does one firefly (temporalTapsContradict).
 bool temporalHistoryRejected(int2 p, int2 origin, int2 nearest, int2 size, uint id) {
-    float c = 0.0f, h = 0.0f, v = 0.0f, quantum = 0.0f;
+    TemporalTaps taps = temporalTapsNone();
     TEMPORAL_UNROLL for (int dy = -1; dy <= 1; ++dy) {
         TEMPORAL_UNROLL for (int dx = -1; dx <= 1; ++dx) {
             int2 q = p + int2(dx, dy), hq = nearest + int2(dx, dy);
@@ -106,14 +106,10 @@ bool temporalHistoryRejected(int2 p, int2 origin, int2 nearest, int2 size, uint 
             float4 history = CAUSTICS_TEXEL(historyColor, ht) * params.historyScale;
             int r = filterRegionIndex(q, origin);
             if (sTemporalId[r] != id || filterGuideStoredId(guide) != filterGuideId(id)) continue;
-            float l = sTemporalLuminance[r];
-            c += l;
-            h += filterLuminance(history.rgb);
-            v += history.a * history.a;
-            if (l > 0.0f) quantum = quantum > 0.0f ? min(quantum, l) : l;
+            taps = temporalTapAdd(taps, sTemporalLuminance[r], filterLuminance(history.rgb), history.a * history.a);
         }
     }
-    return temporalContradicts(c, h, v, quantum);
+    return temporalTapsContradict(taps);
 }
 
 // Screen-space derivative of linear depth along `axis`: the smaller one-sided difference on the same
