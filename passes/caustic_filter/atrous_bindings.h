@@ -1,21 +1,12 @@
 #pragma once
-// caustics.atrous.N's shader resources, declared once (docs/shaders.md, "Bindings"): the select pass
-// lists the tiles of the iteration, admitted while still noisy (caustic_atrous_select), the pairs pass
-// writes each admitted pixel's 12 packed pair weights and adds them to the weight sums W_q, and the others'
-// result into caustics.radiance (caustic_atrous_pairs), the iterations before the last write the pool
-// (caustic_atrous), the last writes caustics.radiance (caustic_atrous_last).
+// caustics.atrous.N's shader resources, declared once (docs/shaders.md, "Bindings"): the pairs pass
+// writes each pixel's 12 packed pair weights and adds them to the weight sums W_q (caustic_atrous_pairs),
+// the iterations before the last write the pool (caustic_atrous), the last writes caustics.radiance
+// (caustic_atrous_last).
 #include "bindings/shader_binding.h"
 
 namespace caustics::shader_bindings {
 
-inline constexpr Binding kCausticAtrousSelectBindingList[] = {
-    {"tileArgs", Kind::StorageBufferRO, 0, 0, "uint"},   // caustics.filterTileArgs: word 0, the tiles listed
-    {"slotMap", Kind::SampledTexture, 0, 1, "uint"},
-    {"tiles", Kind::StorageBufferRO, 0, 2, "uint"},      // the tile list, x | y << 16 (list index = pool tile)
-    {"progress", Kind::StorageBufferRW, 0, 3, "uint"},   // caustics.filterProgress (quiet_tiles.h)
-    {"iterationArgs", Kind::StorageBufferRW, 0, 4, "uint"},    // caustics.atrous.tileArgs: (entries, 1, 1, 0) per iteration
-    {"iterationTiles", Kind::StorageBufferRW, 0, 5, "uint"},   // caustics.atrous.tiles: pool tiles per iteration
-};
 inline constexpr Binding kCausticAtrousPairsBindingList[] = {
     {"inColor", Kind::SampledTexture, 0, 0, "float4"},   // pool: rgb radiance, a deviation of the mean
     {"guides", Kind::SampledTexture, 0, 1, "uint4"},     // pool: filterPackAtrousGuide (caustics.temporal)
@@ -23,9 +14,6 @@ inline constexpr Binding kCausticAtrousPairsBindingList[] = {
     {"tiles", Kind::StorageBufferRO, 0, 3, "uint"},      // the tile list, x | y << 16
     {"outPairs", Kind::StorageTexture, 0, 4, "uint4", ImageFormat::Rgba32ui},   // pool: atrousPackWeight x 12
     {"weightSums", Kind::StorageBufferRW, 0, 5, "uint"},   // caustics.atrous.sums: W_q x 2^30 per pool texel (atrousSumIndex)
-    {"iterationTiles", Kind::StorageBufferRO, 0, 6, "uint"},   // this iteration's list from listBase (atrous_select.h)
-    {"progress", Kind::StorageBufferRO, 0, 7, "uint"},         // which neighbours take part (quiet_tiles.h)
-    {"radiance", Kind::StorageTexture, 0, 8, "float4", ImageFormat::Rgba32f},   // screen: the result of tiles leaving
 };
 // The shares passes read no guide: the pairs hold every edge test (atrous_thread.h).
 inline constexpr Binding kCausticAtrousBindingList[] = {
@@ -35,8 +23,6 @@ inline constexpr Binding kCausticAtrousBindingList[] = {
     {"weightSums", Kind::StorageBufferRW, 0, 3, "uint"},   // reads this iteration's region, zeroes the next's
     {"pairs", Kind::SampledTexture, 0, 4, "uint4"},
     {"outColor", Kind::StorageTexture, 0, 5, "float4", ImageFormat::Rgba16f},   // pool
-    {"iterationTiles", Kind::StorageBufferRO, 0, 6, "uint"},
-    {"progress", Kind::StorageBufferRW, 0, 7, "uint"},   // reads who takes part, writes its tile's noisy flag
 };
 inline constexpr Binding kCausticAtrousLastBindingList[] = {
     {"inColor", Kind::SampledTexture, 0, 0, "float4"},
@@ -45,12 +31,8 @@ inline constexpr Binding kCausticAtrousLastBindingList[] = {
     {"weightSums", Kind::StorageBufferRO, 0, 3, "uint"},
     {"pairs", Kind::SampledTexture, 0, 4, "uint4"},
     {"outColor", Kind::StorageTexture, 0, 5, "float4", ImageFormat::Rgba32f},   // screen: caustics.radiance
-    {"iterationTiles", Kind::StorageBufferRO, 0, 6, "uint"},
-    {"progress", Kind::StorageBufferRO, 0, 7, "uint"},
 };
 
-inline constexpr PassBindings kCausticAtrousSelectBindings{"caustic_atrous_select", "passes/caustic_filter/atrous_bindings.h",
-                                                           kCausticAtrousSelectBindingList, "AtrousSelectParams", "params"};
 inline constexpr PassBindings kCausticAtrousPairsBindings{"caustic_atrous_pairs", "passes/caustic_filter/atrous_bindings.h",
                                                           kCausticAtrousPairsBindingList, "AtrousParams", "params"};
 inline constexpr PassBindings kCausticAtrousBindings{"caustic_atrous", "passes/caustic_filter/atrous_bindings.h",

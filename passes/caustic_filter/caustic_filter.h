@@ -11,9 +11,9 @@
 namespace caustics {
 
 struct CausticFilterPipelines {
-    rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout, atrousSelectLayout,
-        atrousPairsLayout, atrousLayout, atrousLastLayout, outputLayout, combineLayout;
-    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousSelect, atrousPairs, atrous, atrousLast, output;
+    rhi::BindingLayoutHandle resolveLayout, tilesLayout, tileListLayout, temporalLayout, varianceLayout, atrousPairsLayout, atrousLayout,
+        atrousLastLayout, outputLayout, combineLayout;
+    rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousPairs, atrous, atrousLast, output;
     rhi::ComputePipelineHandle combine;   // first + second type, each filtered on its own guides
 
     static Result<CausticFilterPipelines> create(rhi::IDevice& device);

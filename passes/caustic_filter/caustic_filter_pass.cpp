@@ -8,26 +8,20 @@
 //   caustics.temporal   reprojected history, disocclusion tests, 1/n average up to the history cap; writes
 //                       this frame's copy of the ping-ponged history (the result, unfiltered, its
 //                       luminance deviation, the guides) and the a-trous guide, packed once per frame
-//   caustics.variance   luminance variance: temporal moments, or photon shot noise for short histories;
-//                       each tile's noisy flag (docs/caustics.md "Quiet tiles")
-//   caustics.atrous.N.select  iteration N's tile list: the tiles still noisy, or near one, admitted, the
-//                       others leaving (their result goes into caustics.radiance in the pairs pass)
+//   caustics.variance   luminance variance: temporal moments, or photon shot noise for short histories
 //   caustics.atrous.N   edge-aware a-trous iterations stopping at depth, normal, object and luminance,
 //                       energy-preserving: the symmetric pair weights and their sums (.pairs, into
 //                       one of two alternating regions of caustics.atrous.sums, zeroed by
 //                       caustics.variance or the iteration before), then the shares
 //   caustics.filterOutput  (atrousIterations 0 only) the temporal result into caustics.radiance
-// The pairs passes (tiles leaving the iterations) and the last iteration write into caustics.radiance,
-// over the listed tiles (the others hold this frame's zeros).
+// The last pass writes into caustics.radiance, over the listed tiles (the others hold this frame's zeros).
 // With settings.filter off the combined radiance is returned unfiltered. The second type filtered apart
 // runs every pass again with ".secondType" after its name, then caustics.filterCombine.
-#include <algorithm>
 #include <string>
 
 #include "caustic_filter/atrous_bindings.h"
 #include "caustic_filter/filter_graph.h"
 #include "caustic_filter/shaders/atrous.h"
-#include "caustic_filter/shaders/atrous_select.h"
 #include "caustic_filter/output_bindings.h"
 #include "caustic_filter/resolve_bindings.h"
 #include "caustic_filter/shaders/output.h"
@@ -115,67 +109,15 @@ void addOneTypeResolvePass(rg::RenderGraph& graph, CausticFrame& f, const std::s
 struct FilterFrame {
     FilterTiles tiles;
     rg::RgTexture guide;   // pool RGBA32UI: the a-trous guide (caustics.temporal, filterPackAtrousGuide)
-    // caustics.filterProgress (two words per pool tile, shaders/quiet_tiles.h) and caustics.atrous.tiles
-    // (each iteration's admitted pool tiles, poolTiles words per iteration).
-    rg::RgBuffer progress, iterationTiles;
     uint32_t poolTiles = 0;
     float preExposure = 1.0f;
 };
 
-// caustics.atrous.N.select: lists iteration i's tiles, admitted while they or a tile within its reach
-// are noisy (shaders/atrous_select.h); one thread per pool tile.
-void addAtrousSelectPass(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterFrame& ff) {
-    const std::string name = "caustics.atrous." + std::to_string(i) + ".select";
-    const shader::AtrousSelectParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), i, i * ff.poolTiles};
-    graph.addPass(filterPassName(f, name), [&](rg::PassBuilder& b) {
-        b.setStages(rhi::PipelineStages::Compute);
-        ff.tiles.args = b.read(ff.tiles.args);
-        ff.tiles.list = b.read(ff.tiles.list);
-        ff.tiles.slots = b.read(ff.tiles.slots);
-        ff.progress = b.write(ff.progress, rg::Access::StorageReadWrite);
-        ff.tiles.iterationArgs = b.write(ff.tiles.iterationArgs, rg::Access::StorageReadWrite);
-        if (i == 0) {
-            const uint32_t words = std::max(f.in->settings.atrousIterations, 1u) * ff.poolTiles;
-            ff.iterationTiles = b.createBuffer("caustics.atrous.tiles", rhi::BufferDesc().setByteSize(uint64_t(words) * 4)
-                                                                            .setUsage(rhi::BufferUsage::Storage)
-                                                                            .setDebugName("caustics.atrous.tiles"));
-        }
-        ff.iterationTiles = b.write(ff.iterationTiles, rg::Access::StorageReadWrite);
-        CausticFrame fr = f;
-        const FilterTiles t = ff.tiles;
-        const rg::RgBuffer progress = ff.progress, list = ff.iterationTiles;
-        const uint32_t groups = (ff.poolTiles + 63) / 64;
-        return [=](rg::PassContext& ctx) {
-            auto d = PassBindingSet(shader_bindings::kCausticAtrousSelectBindings, 0)
-                         .buffer("tileArgs", ctx.buffer(t.args))
-                         .texture("slotMap", ctx.texture(t.slots))
-                         .buffer("tiles", ctx.buffer(t.list))
-                         .buffer("progress", ctx.buffer(progress))
-                         .buffer("iterationArgs", ctx.buffer(t.iterationArgs))
-                         .buffer("iterationTiles", ctx.buffer(list))
-                         .desc();
-            if (!d) log(LogLevel::Error, "caustics.atrous.select: " + d.message());
-            else if (bindFilter(ctx, *fr.res, fr.res->filter.atrousSelect, fr.res->filter.atrousSelectLayout, std::move(*d), push))
-                ctx.cmd().dispatch(groups, 1);
-        };
-    });
-}
-
-// The passes of iteration i read its admitted tiles (caustics.atrous.N.select), the slot map and the list
-// that names each pool tile's screen tile.
-void readIterationTiles(rg::PassBuilder& b, FilterFrame& ff) {
-    ff.tiles.iterationArgs = b.read(ff.tiles.iterationArgs, rg::Access::IndirectArgument);
-    ff.iterationTiles = b.read(ff.iterationTiles);
-    ff.tiles.list = b.read(ff.tiles.list);
-    ff.tiles.slots = b.read(ff.tiles.slots);
-}
-
 // Iteration i (step 2^i) on `radiance` (pool: rgb, a deviation), which it replaces with its result; the
-// last iteration writes into `output` (caustics.radiance) instead. Three passes: the select (above), each
-// admitted pixel's pair weights to its 12 later neighbours (and the leaving tiles' result into `output`),
-// added to both pixels' weight sums in the
-// iteration's region of `sums` (caustics.variance zeroes the first), then the shares w / W_q, which zero
-// the next iteration's region (passes/caustic_filter/shaders/atrous.h; docs/caustics.md "Cost").
+// last iteration writes into `output` (caustics.radiance) instead. Two passes: each pixel's pair weights to
+// its 12 later neighbours, added to both pixels' weight sums in the iteration's region of `sums`
+// (caustics.variance zeroes the first), then the shares w / W_q, which zero the next iteration's region
+// (passes/caustic_filter/shaders/atrous.h; docs/caustics.md "Cost").
 void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, FilterFrame& ff, rg::RgTexture& radiance,
                         rg::RgTexture& output, rg::RgBuffer& sums, bool jitteredGuides) {
     const CausticsSettings& s = f.in->settings;
@@ -184,24 +126,18 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     const uint32_t region = ff.poolTiles * shader::kFilterGroupThreads;
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
                                     1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f, (i & 1u) * region,
-                                    last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region, i, i * ff.poolTiles,
-                                    s.filterQuietRelative, s.filterQuietFloor};
-    const uint64_t argsOffset = 16ull * i;
-    addAtrousSelectPass(graph, f, i, ff);
+                                    last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region};
     rg::RgTexture pairs;
     graph.addPass(filterPassName(f, name + ".pairs"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), guide = b.read(ff.guide);
-        readIterationTiles(b, ff);
-        const rg::RgBuffer progress = ff.progress = b.read(ff.progress);
+        readTiles(b, ff.tiles, true);
         pairs = b.write(b.createTexture(name + ".pairs", poolImageDesc(ff.poolTiles, rhi::Format::RGBA32_UINT, "caustics.atrousPairs")));
         sums = b.write(sums, rg::Access::StorageReadWrite);
-        const rg::RgTexture result = output = b.write(output);   // the tiles that leave the iterations here
         CausticFrame fr = f;
         rg::RgTexture o = pairs;
         rg::RgBuffer w = sums;
-        const FilterTiles t = ff.tiles;
-        const rg::RgBuffer list = ff.iterationTiles;
+        FilterTiles t = ff.tiles;
         return [=](rg::PassContext& ctx) {
             dispatchDeclared(ctx, *fr.res, fr.res->filter.atrousPairs, fr.res->filter.atrousPairsLayout,
                              PassBindingSet(shader_bindings::kCausticAtrousPairsBindings, 0)
@@ -210,25 +146,20 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                                  .texture("slotMap", ctx.texture(t.slots))
                                  .buffer("tiles", ctx.buffer(t.list))
                                  .texture("outPairs", ctx.texture(o))
-                                 .buffer("weightSums", ctx.buffer(w))
-                                 .buffer("iterationTiles", ctx.buffer(list))
-                                 .buffer("progress", ctx.buffer(progress))
-                                 .texture("radiance", ctx.texture(result)),
-                             push, t.iterationArgs, argsOffset);
+                                 .buffer("weightSums", ctx.buffer(w)),
+                             push, t.args);
         };
     });
     graph.addPass(filterPassName(f, name), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         const rg::RgTexture in = b.read(radiance), pw = b.read(pairs);
         const rg::RgBuffer w = sums = last ? b.read(sums) : b.write(sums, rg::Access::StorageReadWrite);
-        readIterationTiles(b, ff);
-        const rg::RgBuffer progress = ff.progress = last ? b.read(ff.progress) : b.write(ff.progress, rg::Access::StorageReadWrite);
+        readTiles(b, ff.tiles, true);
         if (last) radiance = output = b.write(output);
         else radiance = b.write(b.createTexture(name, poolImageDesc(ff.poolTiles, rhi::Format::RGBA16_FLOAT, "caustics.atrous")));
         CausticFrame fr = f;
         rg::RgTexture o = radiance;
-        const FilterTiles t = ff.tiles;
-        const rg::RgBuffer list = ff.iterationTiles;
+        FilterTiles t = ff.tiles;
         return [=](rg::PassContext& ctx) {
             const auto& declared = last ? shader_bindings::kCausticAtrousLastBindings : shader_bindings::kCausticAtrousBindings;
             dispatchDeclared(ctx, *fr.res, last ? fr.res->filter.atrousLast : fr.res->filter.atrous,
@@ -239,10 +170,8 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                                  .buffer("tiles", ctx.buffer(t.list))
                                  .buffer("weightSums", ctx.buffer(w))
                                  .texture("pairs", ctx.texture(pw))
-                                 .texture("outColor", ctx.texture(o))
-                                 .buffer("iterationTiles", ctx.buffer(list))
-                                 .buffer("progress", ctx.buffer(progress)),
-                             push, t.iterationArgs, argsOffset);
+                                 .texture("outColor", ctx.texture(o)),
+                             push, t.args);
         };
     });
 }
@@ -390,19 +319,12 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
                                                                   .setUsage(rhi::BufferUsage::Storage)
                                                                   .setDebugName("caustics.atrousSums")),
                        rg::Access::StorageReadWrite);
-        // Each tile's noisy flag, then the iterations it was admitted to (shaders/quiet_tiles.h).
-        ff.progress = b.write(b.createBuffer("caustics.filterProgress", rhi::BufferDesc()
-                                                                          .setByteSize(uint64_t(ff.poolTiles) * 8)
-                                                                          .setUsage(rhi::BufferUsage::Storage)
-                                                                          .setDebugName("caustics.filterProgress")),
-                              rg::Access::StorageReadWrite);
         CausticFrame fr = f;
         rg::RgTexture o = radiance;
-        rg::RgBuffer zeroed = sums, progress = ff.progress;
+        rg::RgBuffer zeroed = sums;
         FilterTiles t = ff.tiles;
         // The second type's guides carry each pixel's photon weight (second_type_guides.h).
-        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u,
-                                          s.filterQuietRelative, s.filterQuietFloor, float(s.filterMaxHistory)};
+        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u};
         return [=](rg::PassContext& ctx) {
             dispatchDeclared(ctx, *fr.res, fr.res->filter.variance, fr.res->filter.varianceLayout,
                              PassBindingSet(shader_bindings::kCausticVarianceBindings, 0)
@@ -414,8 +336,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
                                  .texture("slotMap", ctx.texture(t.slots))
                                  .buffer("tiles", ctx.buffer(t.list))
                                  .texture("outColor", ctx.texture(o))
-                                 .buffer("weightSums", ctx.buffer(zeroed))
-                                 .buffer("progress", ctx.buffer(progress)),
+                                 .buffer("weightSums", ctx.buffer(zeroed)),
                              push, t.args);
         };
     });

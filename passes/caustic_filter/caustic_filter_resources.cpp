@@ -4,7 +4,6 @@
 #include "caustic_filter/output_bindings.h"
 #include "caustic_filter/resolve_bindings.h"
 #include "caustic_filter/shaders/atrous.h"
-#include "caustic_filter/shaders/atrous_select.h"
 #include "caustic_filter/shaders/output.h"
 #include "caustic_filter/shaders/resolve.h"
 #include "caustic_filter/shaders/temporal.h"
@@ -21,9 +20,7 @@
 
 namespace caustics {
 
-static_assert(sizeof(shader::AtrousParams) == 48);
-static_assert(sizeof(shader::AtrousSelectParams) == 20);
-static_assert(shader::kFilterMaxAtrousIterations == CausticsSettings::kMaxAtrousIterations);
+static_assert(sizeof(shader::AtrousParams) == 32);
 static_assert(shader::kFilterPoolTilesPerRow == kFilterPoolTilesPerRow);
 
 Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
@@ -39,7 +36,6 @@ Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
     CAUSTICS_TRY(p.tileListLayout, layout(shader_bindings::kCausticTileListBindings));
     CAUSTICS_TRY(p.temporalLayout, layout(shader_bindings::kCausticTemporalBindings));
     CAUSTICS_TRY(p.varianceLayout, layout(shader_bindings::kCausticVarianceBindings));
-    CAUSTICS_TRY(p.atrousSelectLayout, layout(shader_bindings::kCausticAtrousSelectBindings));
     CAUSTICS_TRY(p.atrousPairsLayout, layout(shader_bindings::kCausticAtrousPairsBindings));
     CAUSTICS_TRY(p.atrousLayout, layout(shader_bindings::kCausticAtrousBindings));
     CAUSTICS_TRY(p.atrousLastLayout, layout(shader_bindings::kCausticAtrousLastBindings));
@@ -50,8 +46,6 @@ Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
     CAUSTICS_TRY(p.output, createPassComputePipeline(d, "caustic_filter/output.comp", {p.outputLayout}, sizeof(shader::FilterOutputParams)));
     CAUSTICS_TRY(p.temporal, createPassComputePipeline(d, "caustic_filter/temporal.comp", {p.temporalLayout}, sizeof(shader::TemporalParams)));
     CAUSTICS_TRY(p.variance, createPassComputePipeline(d, "caustic_filter/variance.comp", {p.varianceLayout}, sizeof(shader::VarianceParams)));
-    CAUSTICS_TRY(p.atrousSelect, createPassComputePipeline(d, "caustic_filter/atrous_select.comp", {p.atrousSelectLayout},
-                                                         sizeof(shader::AtrousSelectParams)));
     CAUSTICS_TRY(p.atrousPairs, createPassComputePipeline(d, "caustic_filter/atrous_pairs.comp", {p.atrousPairsLayout},
                                                         sizeof(shader::AtrousParams)));
     CAUSTICS_TRY(p.atrous, createPassComputePipeline(d, "caustic_filter/atrous.comp", {p.atrousLayout}, sizeof(shader::AtrousParams)));

@@ -51,13 +51,13 @@ bool dispatchImage(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::C
     return true;
 }
 
-// One 8x8 group per listed tile, the group count read from the tile list's arguments (at argsOffset).
+// One 8x8 group per listed tile, the group count read from the tile list's arguments.
 template <typename Push>
 bool dispatchTiles(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::ComputePipelineHandle& pipeline,
                    const rhi::BindingLayoutHandle& layout, rhi::BindingSetDesc bindings, const Push& push,
-                   rg::RgBuffer args, uint64_t argsOffset = 0) {
+                   rg::RgBuffer args) {
     if (!bindFilter(ctx, r, pipeline, layout, std::move(bindings), push)) return false;
-    ctx.cmd().dispatchIndirect(ctx.buffer(args), argsOffset);
+    ctx.cmd().dispatchIndirect(ctx.buffer(args));
     return true;
 }
 
@@ -66,13 +66,13 @@ bool dispatchTiles(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::C
 template <typename Push>
 bool dispatchDeclared(rg::PassContext& ctx, CausticResources::Impl& r, const rhi::ComputePipelineHandle& pipeline,
                       const rhi::BindingLayoutHandle& layout, const PassBindingSet& bindings, const Push& push,
-                      rg::RgBuffer args, uint64_t argsOffset = 0) {
+                      rg::RgBuffer args) {
     auto desc = bindings.desc();
     if (!desc) {
         log(LogLevel::Error, "caustic filter: " + desc.message());
         return false;
     }
-    return dispatchTiles(ctx, r, pipeline, layout, std::move(*desc), push, args, argsOffset);
+    return dispatchTiles(ctx, r, pipeline, layout, std::move(*desc), push, args);
 }
 
 // The view's ping-ponged history (caustic_passes.h): last frame's (read) and this frame's (written).
@@ -88,12 +88,9 @@ void addPoolGrowthPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& 
 // The filter's tile list (caustics.filterTiles.list, shaders/tiles.h): `args` (listed tiles with a pool tile, 1, 1, tiles wanted)
 // for the indirect dispatches, `list` the packed tiles (list index = pool tile), `slots` this frame's
 // slot map.
-// `iterationArgs` (caustics.atrous.tileArgs) the a-trous iterations' arguments, four words each, set to
-// (0, 1, 1, 0) by caustics.filterTiles for the iterations' select passes (shaders/quiet_tiles.h).
 struct FilterTiles {
     rg::RgBuffer args, list;
     rg::RgTexture slots;
-    rg::RgBuffer iterationArgs;
 };
 // caustics.filterTiles, .clear, .list and .count (the read-back of the tiles wanted, which sizes the pool).
 FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, rg::RgTexture raw,

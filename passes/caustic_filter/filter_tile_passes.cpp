@@ -61,8 +61,8 @@ void addPoolGrowthPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& 
     });
 }
 
-// caustics.filterTiles: this frame's tile state (shaders/tiles.h) and the list's and the a-trous
-// iterations' indirect arguments set to (0, 1, 1, 0), then caustics.filterTiles.list lists the tiles and gives each a pool tile. Nothing after it runs
+// caustics.filterTiles: this frame's tile state (shaders/tiles.h) and the list's indirect arguments set to
+// (0, 1, 1, 0), then caustics.filterTiles.list lists the tiles and gives each a pool tile. Nothing after it runs
 // on an unlisted tile.
 FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, rg::RgTexture raw,
                           bool historyUsable) {
@@ -79,13 +79,9 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
                                         rhi::BufferDesc().setByteSize(16)
                                             .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::Indirect | rhi::BufferUsage::CopySource)
                                             .setDebugName("caustics.filterTileArgs")));
-        t.iterationArgs = b.write(b.createBuffer("caustics.atrous.tileArgs",
-                                                 rhi::BufferDesc().setByteSize(16 * shader::kFilterMaxAtrousIterations)
-                                                     .setUsage(rhi::BufferUsage::Storage | rhi::BufferUsage::Indirect)
-                                                     .setDebugName("caustics.atrous.tileArgs")));
         CausticFrame fr = f;
         rg::RgTexture o = hist.tiles;
-        rg::RgBuffer args = t.args, iterationArgs = t.iterationArgs;
+        rg::RgBuffer args = t.args;
         const shader::FilterTilesParams push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory};
         return [=](rg::PassContext& ctx) {
             auto d = PassBindingSet(shader_bindings::kCausticFilterTilesBindings, 0)
@@ -96,7 +92,6 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
                          .texture("previousTiles", ctx.texture(in[3]))
                          .texture("tileState", ctx.texture(o))
                          .buffer("tileArgs", ctx.buffer(args))
-                         .buffer("iterationArgs", ctx.buffer(iterationArgs))
                          .desc();
             if (!d) log(LogLevel::Error, "caustics.filterTiles: " + d.message());
             else if (bindFilter(ctx, *fr.res, fr.res->filter.tiles, fr.res->filter.tilesLayout, std::move(*d), push))

@@ -13,7 +13,6 @@ inline constexpr Binding kCausticFilterTilesBindingList[] = {
     {"previousTiles", Kind::SampledTexture, 0, 4, "uint"},       // last frame's tile state
     {"tileState", Kind::StorageTexture, 0, 5, "uint", ImageFormat::R32ui},
     {"tileArgs", Kind::StorageBufferRW, 0, 6, "uint"},           // set to (0, 1, 1, 0) for the list pass
-    {"iterationArgs", Kind::StorageBufferRW, 0, 7, "uint"},      // caustics.atrous.tileArgs, each (0, 1, 1, 0)
 };
 inline constexpr Binding kCausticTileListBindingList[] = {
     {"tileState", Kind::StorageTexture, 0, 0, "uint", ImageFormat::R32ui},   // read, and 0 -> 1 for neighbours

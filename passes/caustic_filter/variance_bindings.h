@@ -14,7 +14,6 @@ inline constexpr Binding kCausticVarianceBindingList[] = {
     {"outColor", Kind::StorageTexture, 0, 6, "float4", ImageFormat::Rgba16f},   // pool
     {"gNormal", Kind::SampledTexture, 0, 7, "float4"},          // .w: photon weights (VarianceParams)
     {"weightSums", Kind::StorageBufferRW, 0, 8, "uint"},        // caustics.atrous.sums: zeroes the first region
-    {"progress", Kind::StorageBufferRW, 0, 9, "uint"},          // caustics.filterProgress: its tile's noisy flag
 };
 
 inline constexpr PassBindings kCausticVarianceBindings{"caustic_variance", "passes/caustic_filter/variance_bindings.h",

@@ -48,10 +48,6 @@ Status CausticsSettings::validate() const {
         return outOfRange("atrousIterations", atrousIterations, 0u, kMaxAtrousIterations);
     if (!std::isfinite(filterLuminanceSigma) || filterLuminanceSigma <= 0.0f || filterLuminanceSigma > kMaxFilterLuminanceSigma)
         return outOfRange("filterLuminanceSigma", filterLuminanceSigma, 1e-6f, kMaxFilterLuminanceSigma);
-    if (!std::isfinite(filterQuietRelative) || filterQuietRelative < 0.0f || filterQuietRelative > 1.0f)
-        return outOfRange("filterQuietRelative", filterQuietRelative, 0.0f, 1.0f);
-    if (!std::isfinite(filterQuietFloor) || filterQuietFloor < 0.0f || filterQuietFloor > 1.0f)
-        return outOfRange("filterQuietFloor", filterQuietFloor, 0.0f, 1.0f);
     if (!std::isfinite(exposure) || exposure <= 0.0f) return makeError("CausticsSettings::exposure must be > 0");
     if (framesInFlight < 1 || framesInFlight > kMaxFramesInFlight)
         return outOfRange("framesInFlight", framesInFlight, 1u, kMaxFramesInFlight);

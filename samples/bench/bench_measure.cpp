@@ -16,8 +16,6 @@ CausticsSettings benchSettings(const BenchOptions& o) {
     s.filter = o.filter;
     s.filterSecondTypeApart = o.filterSecondTypeApart;
     s.secondTypeSplitLobes = o.secondTypeSplitLobes;
-    s.filterQuietRelative = o.filterQuietRelative;
-    s.filterQuietFloor = o.filterQuietFloor;
     s.sphereRadiusScale = o.sphereRadiusScale;
     s.mapOccluders = o.mapOccluders;
     s.photonsPerFrame = o.photons;

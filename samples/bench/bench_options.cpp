@@ -36,16 +36,6 @@ Result<float> parsePositive(std::string_view flag, std::string_view text, float 
     return float(value);
 }
 
-Result<float> parseFraction(std::string_view flag, std::string_view text) {
-    std::string s(text);
-    char* end = nullptr;
-    double value = std::strtod(s.c_str(), &end);
-    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(value))
-        return makeError(std::string(flag) + ": expected a number, got '" + s + "'");
-    if (value < 0.0 || value > 1.0) return makeError(std::string(flag) + ": " + s + " is outside [0, 1]");
-    return float(value);
-}
-
 Status setOption(BenchOptions& o, std::string_view flag, std::string_view value) {
     if (flag == "--backend") {
         auto backend = rhi::parseBackend(value);
@@ -97,10 +87,6 @@ Status setOption(BenchOptions& o, std::string_view flag, std::string_view value)
         if (value != "apart" && value != "merged")
             return makeError("--filter-second-type: expected apart or merged, got '" + std::string(value) + "'");
         o.filterSecondTypeApart = value == "apart";
-    } else if (flag == "--filter-quiet-relative") {
-        CAUSTICS_TRY(o.filterQuietRelative, parseFraction(flag, value));
-    } else if (flag == "--filter-quiet-floor") {
-        CAUSTICS_TRY(o.filterQuietFloor, parseFraction(flag, value));
     } else if (flag == "--second-type-lobes") {
         if (value != "split" && value != "sampled")
             return makeError("--second-type-lobes: expected split or sampled, got '" + std::string(value) + "'");
@@ -154,8 +140,6 @@ std::string benchUsage() {
         "  --filter on|off             caustic filter (default off, as the paper measured)\n"
         "  --filter-second-type apart|merged  second type filtered on its own guides or with the first\n"
         "                              (default merged, CausticsSettings::filterSecondTypeApart)\n"
-        "  --filter-quiet-relative X --filter-quiet-floor X  [0, 1]: when a tile leaves the a-trous iterations\n"
-        "                              (CausticsSettings::filterQuiet*, docs/caustics.md \"Quiet tiles\")\n"
         "  --second-type-lobes split|sampled  camera paths through glass split off their likely lobe\n"
         "                              (default split) or pick one lobe per event (the paper)\n"
         "  --sphere-radius-scale X     second-type gather radius in pixel footprint widths (0, 64] (default 0.75)\n"

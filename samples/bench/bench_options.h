@@ -29,8 +29,6 @@ struct BenchOptions {
     bool filter = false;            // the paper measured with the filter off
     bool filterSecondTypeApart = false;   // CausticsSettings::filterSecondTypeApart
     bool secondTypeSplitLobes = true;     // CausticsSettings::secondTypeSplitLobes
-    float filterQuietRelative = CausticsSettings{}.filterQuietRelative;
-    float filterQuietFloor = CausticsSettings{}.filterQuietFloor;
     float sphereRadiusScale = CausticsSettings{}.sphereRadiusScale;
     bool viewAway = false;          // caustics / frame: the camera turned away from every caustic (--view away)
     bool mapOccluders = false;      // CausticsSettings::mapOccluders

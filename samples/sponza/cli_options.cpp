@@ -96,9 +96,6 @@ const char* cliUsage() {
            "  --max-stored-hits N     forward hits kept for the second type (default 1048576)\n"
            "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
            "  --no-second-type        skip caustics seen through glass (the backward sphere pass)\n"
-           "  --filter-quiet-relative X --filter-quiet-floor X   a tile leaves the a-trous iterations once\n"
-           "                          every deviation is below max(X_rel x luminance, X_floor x white), in [0, 1]\n"
-           "                          (defaults 0.02, 1/1024; docs/caustics.md \"Quiet tiles\")\n"
            "  --filter-second-type-apart  filter the caustics seen through glass on the surface they lie on\n"
            "                          (own guides and history; more memory, docs/caustics.md \"Second-type guides\")\n"
            "  --map-occluders         caustic maps also draw occluders (default: specular objects only)\n"
@@ -126,7 +123,6 @@ bool takesValue(const std::string& a) {
     if (!animation || *animation) return true;
     static const char* const kValueOptions[] = {
         "--scene", "--asset-root", "--sponza", "--backend", "--out", "--graph-dot", "--aov", "--camera", "--width", "--height",
-        "--filter-quiet-relative", "--filter-quiet-floor",
         "--frames", "--map-resolution", "--max-stored-hits", "--max-depth", "--rays-per-texel", "--exposure",
         "--reference-photons", "--script"};
     for (const char* known : kValueOptions)
@@ -200,8 +196,6 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
                 return makeError("--rays-per-texel: must be greater than 0 (got " + value + "); the range is (0, 256]");
             CAUSTICS_TRY(o.raysPerTexel, std::move(rays));
         } else if (a == "--exposure") { CAUSTICS_TRY(o.exposure, parseFloat(a, value, 1e-6f, 1e6f)); }
-        else if (a == "--filter-quiet-relative") { CAUSTICS_TRY(o.filterQuietRelative, parseFloat(a, value, 0.0f, 1.0f)); }
-        else if (a == "--filter-quiet-floor") { CAUSTICS_TRY(o.filterQuietFloor, parseFloat(a, value, 0.0f, 1.0f)); }
         else if (a == "--reference-photons") { CAUSTICS_TRY(o.referencePhotons, parseUint(a, value, 1, 1'000'000'000u)); }
         else {
             CAUSTICS_TRY(bool known, parseSampleControl(a, value, o.controls));

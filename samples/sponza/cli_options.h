@@ -7,7 +7,6 @@
 
 #include <glm/glm.hpp>
 
-#include "caustics/caustics_settings.h"
 #include "caustics/rhi/result.h"
 #include "animation_options.h"
 #include "sample_controls.h"
@@ -47,8 +46,6 @@ struct CliOptions {
     uint32_t maxStoredHits = 1u << 20;
     bool filter = true;
     bool filterSecondTypeApart = false;   // CausticsSettings::filterSecondTypeApart
-    float filterQuietRelative = CausticsSettings{}.filterQuietRelative;
-    float filterQuietFloor = CausticsSettings{}.filterQuietFloor;
     bool secondType = true;
     bool mapOccluders = false;
     float exposure = 1.0f;

@@ -49,8 +49,6 @@ CausticsSettings settingsFromOptions(const sample::CliOptions& o) {
     s.maxStoredHits = o.maxStoredHits;
     s.filter = o.filter;
     s.filterSecondTypeApart = o.filterSecondTypeApart;
-    s.filterQuietRelative = o.filterQuietRelative;
-    s.filterQuietFloor = o.filterQuietFloor;
     s.secondType = o.secondType;
     s.mapOccluders = o.mapOccluders;
     s.exposure = o.exposure;

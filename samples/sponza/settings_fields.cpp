@@ -85,8 +85,6 @@ const std::map<std::string, Setter>& setters() {
         {"filterSecondTypeApart", boolField(&CausticsSettings::filterSecondTypeApart)},
         {"atrousIterations", countField(&CausticsSettings::atrousIterations)},
         {"filterLuminanceSigma", floatField(&CausticsSettings::filterLuminanceSigma)},
-        {"filterQuietRelative", floatField(&CausticsSettings::filterQuietRelative)},
-        {"filterQuietFloor", floatField(&CausticsSettings::filterQuietFloor)},
         {"exposure", floatField(&CausticsSettings::exposure)},
         {"framesInFlight", countField(&CausticsSettings::framesInFlight)},
         {"seed", countField(&CausticsSettings::seed)},

@@ -102,8 +102,6 @@ void settingsSection(ViewerState& s) {
         if (ImGui::SliderInt("a-trous iterations", &iterations, 0, int(CausticsSettings::kMaxAtrousIterations)))
             c.atrousIterations = uint32_t(iterations), changed = true;
         changed |= ImGui::SliderFloat("luminance sigma", &c.filterLuminanceSigma, 0.25f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-        changed |= ImGui::SliderFloat("quiet: relative deviation", &c.filterQuietRelative, 0.0f, 0.2f, "%.3f");
-        changed |= ImGui::SliderFloat("quiet: deviation floor", &c.filterQuietFloor, 0.0f, 0.01f, "%.5f");
         if (c.secondType) changed |= ImGui::Checkbox("second type apart (own guides)", &c.filterSecondTypeApart);
     }
     changed |= ImGui::SliderFloat("exposure", &c.exposure, 1e-3f, 1e3f, "%.3f", ImGuiSliderFlags_Logarithmic);

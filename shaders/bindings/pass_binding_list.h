@@ -29,7 +29,7 @@
 namespace caustics::shader_bindings {
 
 inline constexpr const PassBindings* kAllPasses[] = {&kCompositeBindings, &kRemapObjectIdsBindings, &kGridFromCountBindings, &kPhotonPlanBindings,
-                                                     &kCausticAtrousSelectBindings, &kCausticAtrousPairsBindings, &kCausticAtrousBindings, &kCausticAtrousLastBindings, &kCausticVarianceBindings,
+                                                     &kCausticAtrousPairsBindings, &kCausticAtrousBindings, &kCausticAtrousLastBindings, &kCausticVarianceBindings,
                                                      &kCausticFilterOutputBindings, &kCausticResolveBindings,
                                                      &kCausticFilterTilesBindings, &kCausticTileListBindings, &kCausticTemporalBindings,
                                                      &kForwardBindings, &kForwardFixedBindings, &kForwardFixed64Bindings,

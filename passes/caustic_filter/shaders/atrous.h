@@ -15,13 +15,13 @@
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (atrous_bindings.h), 48 bytes.
+// Push constants (atrous_bindings.h), 32 bytes.
 struct AtrousParams {
     int stepWidth;
     int width;
     int height;
     float sigmaLuminance;
-    float invPreExposure;   // pool units (pre-exposed) -> radiance, for what goes into caustics.radiance
+    float invPreExposure;   // the last iteration: pool units (pre-exposed) -> radiance
     // 0 for the camera G-buffer (rasterised at pixel centres, planar surfaces seen directly); 1 for the
     // second type's guides: read where a backward ray jittered inside its pixel reached the receiver (off
     // by up to a pixel of depth slope), through glass that bends the receiver's depth away from a plane
@@ -32,10 +32,6 @@ struct AtrousParams {
     // (kAtrousNoNextSums after the last; caustics.variance zeroes the first iteration's region).
     uint sumsBase;
     uint nextSumsBase;
-    uint iteration;        // N: a neighbour takes part when admitted to more than N iterations (quiet_tiles.h)
-    uint listBase;         // the iteration's first word in caustics.atrous.tiles
-    float quietRelative;   // CausticsSettings::filterQuietRelative
-    float quietFloor;      // CausticsSettings::filterQuietFloor (pool units: white is 1)
 };
 
 CAUSTICS_CONST uint kAtrousNoNextSums = 0xFFFFFFFFu;

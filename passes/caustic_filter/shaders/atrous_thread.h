@@ -1,9 +1,7 @@
 #ifndef CAUSTICS_PASS_CAUSTIC_ATROUS_THREAD_H
 #define CAUSTICS_PASS_CAUSTIC_ATROUS_THREAD_H
 // The thread function of caustics.atrous.N.pairs (kAtrousPairs) and caustics.atrous.N (GLSL and HLSL; the
-// pure functions are atrous.h). One 8x8 group per entry of the iteration's list (caustics.atrous.N.select:
-// it names a pool tile); a tile that leaves the iterations there has its result written by the pairs pass
-// and is skipped by the shares pass;
+// pure functions are atrous.h). One 8x8 group per listed tile (the group index is the tile's pool tile);
 // each tap's colour and guide are fetched (a group-shared region of the tile's colours and guides and its
 // apron measured 3-4x slower on the H200: docs/caustics.md "Cost"), the taps' pool tiles read from the
 // slot map once per group into group-shared memory (sSlots):
@@ -16,9 +14,7 @@
 //            and dark sources after one colour fetch, and zeroes its word of the next iteration's sums
 //            (or, kAtrousLast, writes caustics.radiance).
 // A pixel outside the view or in a tile without a pool tile holds nothing: it is neither a source nor a
-// receiver (docs/caustics.md "Tiles": the energy stays in the listed tiles); nor is a pixel of a tile not
-// admitted to the iteration (quiet_tiles.h). The shares passes before the last store their tile's noisy
-// flag for the next iteration's select.
+// receiver (docs/caustics.md "Tiles": the energy stays in the listed tiles).
 #if defined(kAtrousPairs)
 #include "bindings/caustic_atrous_pairs.h"   // generated from passes/caustic_filter/atrous_bindings.h
 #elif defined(kAtrousLast)
@@ -28,10 +24,6 @@
 #endif
 #include "common/octahedral.h"
 #include "common/resources.h"
-#if !defined(kAtrousPairs) && !defined(kAtrousLast)
-#define FILTER_QUIET_STORE 1   // the shares passes before the last store their tile's noisy flag
-#endif
-#include "quiet_tiles.h"
 
 // The 5x5 tap loops unrolled: each tap's kernel weight and offset become constants (the GLSL entries
 // enable GL_EXT_control_flow_attributes).
@@ -41,8 +33,7 @@
 #define ATROUS_UNROLL [[unroll]]
 #endif
 
-// The pool tiles that hold the group's taps (kFilterNoSlot outside the view or where a tile has none or
-// was not admitted to this iteration),
+// The pool tiles that hold the group's taps (kFilterNoSlot outside the view or where a tile has none),
 // read once per group (atrousLoadSlots) instead of once per tap. A step up to kFilterTileSize / 2 keeps
 // every tap in the group's tile and its 8 neighbours: sSlots[0..8] holds them row by row from the one
 // above left. From kFilterTileSize on (the fourth iteration and later), tap (dx, dy) of every pixel of
@@ -52,16 +43,14 @@ FILTER_GROUPSHARED uint sSlots[25];
 bool atrousSlotsByTap() { return params.stepWidth >= kFilterTileSize; }
 
 // Fills sSlots and returns the group's screen tile. Every thread of the group calls it (a barrier).
-int2 atrousLoadSlots(uint slot, uint local) {
-    int2 tile = filterTileOf(tilesLoad(slot));
+int2 atrousLoadSlots(uint group, uint local) {
+    int2 tile = filterTileOf(tilesLoad(group));
     int2 t = atrousSlotsByTap() ? tile + int2(int(local % 5u) - 2, int(local / 5u) - 2) * (params.stepWidth >> kFilterTileShift)
                                 : tile + int2(int(local % 3u) - 1, int(local / 3u) - 1);
     if (local < (atrousSlotsByTap() ? 25u : 9u)) {
         int2 tiles = int2((params.width + kFilterTileSize - 1) >> kFilterTileShift, (params.height + kFilterTileSize - 1) >> kFilterTileShift);
-        uint s = filterInside(t, tiles.x, tiles.y) ? CAUSTICS_TEXEL_UINT(slotMap, t) : kFilterNoSlot;
-        sSlots[local] = s != kFilterNoSlot && progressLoad(filterIterationsWord(s)) > params.iteration ? s : kFilterNoSlot;
+        sSlots[local] = filterInside(t, tiles.x, tiles.y) ? CAUSTICS_TEXEL_UINT(slotMap, t) : kFilterNoSlot;
     }
-    filterQuietClear(local);
     FILTER_BARRIER();
     return tile;
 }
@@ -101,28 +90,12 @@ AtrousGuide atrousGuide(int2 t) {
     return a;
 }
 
-// A tile that leaves the iterations here (kFilterLeavesIterations): its pool colour into caustics.radiance.
-void atrousWriteResult(uint slot, uint local) {
-    int2 p = filterTileOf(tilesLoad(slot)) * kFilterTileSize + int2(int(local % 8u), int(local / 8u));
-    if (!filterInside(p, params.width, params.height)) return;
-    float4 c = CAUSTICS_TEXEL(inColor, filterPoolTexel(slot, p));
-    CAUSTICS_IMAGE_STORE(radiance, p, float4(c.rgb * params.invPreExposure, 1.0f));
-}
-
 void atrousThread(uint group, uint local) {
     int s = params.stepWidth;
-    uint entry = iterationTilesLoad(params.listBase + group);
-    uint slot = entry & ~kFilterLeavesIterations;
-    // Every thread passes the barrier in atrousLoadSlots before the group-uniform branch (DXC and SPIR-V
-    // both want barriers in uniform control flow, and neither can prove this branch uniform).
-    int2 tile = atrousLoadSlots(slot, local);
-    if (slot != entry) {
-        atrousWriteResult(slot, local);
-        return;
-    }
+    int2 tile = atrousLoadSlots(group, local);
     int2 p = tile * kFilterTileSize + int2(int(local % 8u), int(local / 8u));
     if (!filterInside(p, params.width, params.height)) return;
-    int2 own = filterPoolTexel(slot, p);
+    int2 own = filterPoolTexel(group, p);   // list index = pool tile (tile_list_thread.h)
     float4 centreColor = CAUSTICS_TEXEL(inColor, own);
     AtrousGuide centre = atrousGuide(own);
     uint4 pairs = uint4(0u, 0u, 0u, 0u);
@@ -151,7 +124,7 @@ void atrousThread(uint group, uint local) {
         }
     }
     CAUSTICS_IMAGE_STORE(outPairs, own, pairs);
-    weightSumsAtomicAdd(atrousSumIndex(slot, p), sum);
+    weightSumsAtomicAdd(atrousSumIndex(group, p), sum);
 }
 #else
 void atrousStore(int2 p, int2 own, float3 rgb, float deviation) {
@@ -172,51 +145,36 @@ void atrousAddShare(uint slot, int2 q, float w, CAUSTICS_INOUT(float3) sum, CAUS
     variance += share * share * (c.a * c.a);
 }
 
-// The shares of pixel p (of the group's tile `tile`, pool tile `slot`) stored; true where the result is
-// still noisy (quiet_tiles.h).
-bool atrousShares(uint slot, int2 tile, int2 p) {
+void atrousThread(uint group, uint local) {
     int s = params.stepWidth;
-    int2 own = filterPoolTexel(slot, p);
+    int2 tile = atrousLoadSlots(group, local);
+    int2 p = tile * kFilterTileSize + int2(int(local % 8u), int(local / 8u));
+    if (!filterInside(p, params.width, params.height)) return;
+    int2 own = filterPoolTexel(group, p);
 #if !defined(kAtrousLast)
-    // The next iteration's pairs pass adds into that word; every texel this pass reads W from is a pixel
-    // admitted to this iteration, in the view, so every one the next reads is zeroed here (iteration i - 1
-    // read it last pass; the next iteration's pixels are admitted to this one).
-    weightSumsStore(filterPoolWord(params.nextSumsBase, slot, p), 0u);
+    // The next iteration's pairs pass adds into that word; every texel this pass reads W from is a listed
+    // pixel in the view, so every one of those is zeroed here (iteration i - 1 read it last pass).
+    weightSumsStore(filterPoolWord(params.nextSumsBase, group, p), 0u);
 #endif
     // A pixel without a surface (id 0) has no pair and no pair names it, so its W is the centre tap's and
     // it keeps its colour through the same sum: no guide fetch here.
     float3 sum = float3(0.0f, 0.0f, 0.0f);
     float variance = 0.0f;
-    atrousAddShare(slot, p, kAtrousSelfWeight, sum, variance);
+    atrousAddShare(group, p, kAtrousSelfWeight, sum, variance);
     uint4 ownPairs = CAUSTICS_TEXEL(pairs, own);
     ATROUS_UNROLL for (int k = 0; k < kAtrousPairCount; ++k) {
-        // The later neighbour: the pair is this pixel's own (non-zero only where the neighbour takes part).
+        // The later neighbour: the pair is this pixel's own (non-zero only where the neighbour is in the pool).
         int2 tap = atrousPairTap(k), q = p + tap * s;
         uint code = atrousPairCode(ownPairs, k);
         if (code != 0u) atrousAddShare(atrousSlot(q, tile, tap), q, atrousUnpackWeight(code), sum, variance);
         // The earlier neighbour holds the pair at the same index.
         q = p - tap * s;
-        uint slotQ = atrousSlot(q, tile, -tap);
-        if (slotQ == kFilterNoSlot) continue;
-        code = atrousPairCode(CAUSTICS_TEXEL(pairs, filterPoolTexel(slotQ, q)), k);
-        if (code != 0u) atrousAddShare(slotQ, q, atrousUnpackWeight(code), sum, variance);
+        uint slot = atrousSlot(q, tile, -tap);
+        if (slot == kFilterNoSlot) continue;
+        code = atrousPairCode(CAUSTICS_TEXEL(pairs, filterPoolTexel(slot, q)), k);
+        if (code != 0u) atrousAddShare(slot, q, atrousUnpackWeight(code), sum, variance);
     }
-    float deviation = sqrt(variance);
-    atrousStore(p, own, sum, deviation);
-    return filterPixelNoisy(filterLuminance(sum), deviation, params.quietRelative, params.quietFloor);
-}
-
-void atrousThread(uint group, uint local) {
-    uint entry = iterationTilesLoad(params.listBase + group);
-    uint slot = entry & ~kFilterLeavesIterations;
-    int2 tile = atrousLoadSlots(slot, local);
-    int2 p = tile * kFilterTileSize + int2(int(local % 8u), int(local / 8u));
-    // A tile leaving here had its result written by the pairs pass; it stores its flags again (quiet, as
-    // when it was not admitted), so that every thread reaches the barrier in filterQuietStore.
-    bool noisy = slot == entry && filterInside(p, params.width, params.height) && atrousShares(slot, tile, p);
-#if !defined(kAtrousLast)
-    filterQuietStore(slot, local, noisy ? kFilterTileNoisy : 0u, true);
-#endif
+    atrousStore(p, own, sum, sqrt(variance));
 }
 #endif
 

@@ -53,8 +53,6 @@ CAUSTICS_SHARED_END
 #if defined(CAUSTICS_LANG_HLSL)
 #define FILTER_GROUPSHARED groupshared
 #define FILTER_BARRIER() GroupMemoryBarrierWithGroupSync()
-#define FILTER_ATOMIC_OR(target, value) InterlockedOr(target, value)
-#define FILTER_ATOMIC_MAX(target, value) InterlockedMax(target, value)
 float2 filterUnpackHalf2(uint u) { return float2(f16tof32(u & 0xFFFFu), f16tof32(u >> 16)); }
 uint filterPackHalf2(float2 v) { return f32tof16(v.x) | (f32tof16(v.y) << 16); }
 float filterBitsToFloat(uint u) { return asfloat(u); }
@@ -62,8 +60,6 @@ uint filterFloatToBits(float v) { return asuint(v); }
 #else
 #define FILTER_GROUPSHARED shared
 #define FILTER_BARRIER() barrier()
-#define FILTER_ATOMIC_OR(target, value) atomicOr(target, value)
-#define FILTER_ATOMIC_MAX(target, value) atomicMax(target, value)
 float2 filterUnpackHalf2(uint u) { return unpackHalf2x16(u); }
 uint filterPackHalf2(float2 v) { return packHalf2x16(v); }
 float filterBitsToFloat(uint u) { return uintBitsToFloat(u); }

@@ -50,16 +50,16 @@ CAUSTICS_FN bool temporalContradicts(float c, float h, float v, float quantum) {
     return abs(c - h) > kTemporalRejectDeviations * sqrt(v) + 2.0f * quantum;
 }
 
-// The test's taps, added one by one (temporalTapAdd): the sums and, apart, the tap that rose most above
-// its history, which temporalTapsContradict leaves out of both sums when it is a firefly: at least
-// kTemporalFireflyRatio times as bright as any other tap this frame. One such sample in nine is a rare
+// The test's taps, added one by one (temporalTapAdd): the sums and, apart, the brightest tap, which
+// temporalTapsContradict leaves out of both sums when it is a firefly: above its history and at least
+// kTemporalFireflyRatio times as bright as every other tap this frame. One such sample in nine is a rare
 // path, which the 1/n average takes at its weight, not a caustic that moved into the 3x3 (that brightens
 // its neighbours too; a fall is never left out). docs/caustics.md "Moving caustics".
 CAUSTICS_CONST float kTemporalFireflyRatio = 4.0f;
 struct TemporalTaps {
     float c, h, v, quantum;   // as temporalContradicts; quantum 0 until a lit tap
-    float rise, riseC, riseH;   // the largest l - h_tap above 0, and that tap's l and h_tap
-    float top, second;          // the largest and second largest l
+    float top, topH;          // the brightest tap's l and its history
+    float second;             // the second largest l
 };
 CAUSTICS_FN TemporalTaps temporalTapsNone() {
     TemporalTaps t;
@@ -67,10 +67,8 @@ CAUSTICS_FN TemporalTaps temporalTapsNone() {
     t.h = 0.0f;
     t.v = 0.0f;
     t.quantum = 0.0f;
-    t.rise = 0.0f;
-    t.riseC = 0.0f;
-    t.riseH = 0.0f;
     t.top = 0.0f;
+    t.topH = 0.0f;
     t.second = 0.0f;
     return t;
 }
@@ -80,19 +78,18 @@ CAUSTICS_FN TemporalTaps temporalTapAdd(TemporalTaps t, float l, float hl, float
     t.h += hl;
     t.v += variance;
     if (l > 0.0f) t.quantum = t.quantum > 0.0f ? min(t.quantum, l) : l;
-    if (l - hl > t.rise) {
-        t.rise = l - hl;
-        t.riseC = l;
-        t.riseH = hl;
+    if (l > t.top) {
+        t.second = t.top;
+        t.top = l;
+        t.topH = hl;
+    } else {
+        t.second = max(t.second, l);
     }
-    t.second = max(t.second, min(t.top, l));
-    t.top = max(t.top, l);
     return t;
 }
 CAUSTICS_FN bool temporalTapsContradict(TemporalTaps t) {
-    float others = t.riseC >= t.top ? t.second : t.top;   // the brightest of the other taps
-    bool firefly = t.rise > 0.0f && t.riseC >= kTemporalFireflyRatio * others;
-    return firefly ? temporalContradicts(t.c - t.riseC, t.h - t.riseH, t.v, t.quantum)
+    bool firefly = t.top > t.topH && t.top >= kTemporalFireflyRatio * t.second;
+    return firefly ? temporalContradicts(t.c - t.top, t.h - t.topH, t.v, t.quantum)
                    : temporalContradicts(t.c, t.h, t.v, t.quantum);
 }
 CAUSTICS_SHARED_END

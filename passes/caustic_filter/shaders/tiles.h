@@ -32,8 +32,6 @@ struct TileListParams {
 // photon reached the tile this frame.
 CAUSTICS_CONST uint kFilterTilePhotons = 0x80000000u;
 CAUSTICS_CONST uint kFilterTileKeepMask = 0x7FFFFFFFu;
-// caustics.atrous.tileArgs holds four words per a-trous iteration, up to CausticsSettings::kMaxAtrousIterations.
-CAUSTICS_CONST uint kFilterMaxAtrousIterations = 8u;
 
 // A tile's state from its group's findings: photons this frame, or the largest carried state less one.
 CAUSTICS_FN uint filterTileState(bool photons, uint carried, uint keepFrames) {

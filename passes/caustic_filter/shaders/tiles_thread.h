@@ -3,6 +3,13 @@
 // caustics.filterTiles' thread function (GLSL and HLSL; tiles.h says what it computes).
 #include "tiles.h"
 // The entry includes the camera's struct first (scene/camera.glsl or .hlsli; temporal_thread.h says why).
+#if defined(CAUSTICS_LANG_HLSL)
+#define FILTER_ATOMIC_OR(target, value) InterlockedOr(target, value)
+#define FILTER_ATOMIC_MAX(target, value) InterlockedMax(target, value)
+#else
+#define FILTER_ATOMIC_OR(target, value) atomicOr(target, value)
+#define FILTER_ATOMIC_MAX(target, value) atomicMax(target, value)
+#endif
 #include "bindings/caustic_filter_tiles.h"   // generated from passes/caustic_filter/tiles_bindings.h
 #include "common/resources.h"
 
@@ -41,12 +48,9 @@ void filterTilesThread(uint2 group, uint2 pixel, uint local) {
     }
     FILTER_BARRIER();
     if (local == 0u) CAUSTICS_IMAGE_STORE_UINT(tileState, int2(group), filterTileState(sPhotons != 0u, sCarried, params.keepFrames));
-    // The list pass's indirect arguments start at (0 listed, 1, 1, 0 wanted), each a-trous iteration's at
-    // (0 admitted, 1, 1, 0): set here, not by a transfer pass of their own (docs/caustics.md "Tiles").
-    uint argsWord = local % 4u;
-    uint argsStart = argsWord == 1u || argsWord == 2u ? 1u : 0u;
-    if (group.x == 0u && group.y == 0u && local < 4u) tileArgsStore(local, argsStart);
-    if (group.x == 0u && group.y == 0u && local < 4u * kFilterMaxAtrousIterations) iterationArgsStore(local, argsStart);
+    // The list pass's indirect arguments start at (0 listed, 1, 1, 0 wanted): set here, not by a transfer
+    // pass of their own (docs/caustics.md "Tiles").
+    if (group.x == 0u && group.y == 0u && local < 4u) tileArgsStore(local, local == 1u || local == 2u ? 1u : 0u);
 }
 
 #endif  // CAUSTICS_PASS_CAUSTIC_FILTER_TILES_THREAD_H

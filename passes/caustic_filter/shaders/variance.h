@@ -17,12 +17,11 @@
 // sqrt(per-frame variance / n). Over the listed tiles; a neighbour in a tile without a pool tile counts
 // as zero in the 3x3 means. The a-trous iterations follow it (it runs only for them): it also zeroes
 // each pixel's word of their first weight-sum region (caustics.atrous.sums, atrous.h), which the first
-// pairs pass adds into, so that region needs no clear pass of its own, and stores its tile's noisy flag
-// for the first iteration's select (quiet_tiles.h). Entries: variance.comp, variance.hlsl.
+// pairs pass adds into, so that region needs no clear pass of its own. Entries: variance.comp, variance.hlsl.
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (variance_bindings.h), 28 bytes.
+// Push constants (variance_bindings.h), 16 bytes.
 struct VarianceParams {
     int width;
     int height;
@@ -30,9 +29,6 @@ struct VarianceParams {
     // 1: gNormal.w holds each pixel's photon weight (the second type's guides, second_type_guides.h): one
     // photon's step in luminance differs from pixel to pixel in proportion to it.
     uint photonWeights;
-    float quietRelative;   // CausticsSettings::filterQuietRelative
-    float quietFloor;      // CausticsSettings::filterQuietFloor (pool units: white is 1)
-    float fullHistory;     // CausticsSettings::filterMaxHistory: a shorter history is young (quiet_tiles.h)
 };
 CAUSTICS_CONST float kVarianceTemporalHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
 
@@ -45,8 +41,6 @@ CAUSTICS_SHARED_END
 #if !defined(CAUSTICS_LANG_CPP)
 #include "bindings/caustic_variance.h"   // generated from passes/caustic_filter/variance_bindings.h
 #include "common/resources.h"
-#define FILTER_QUIET_STORE 1   // its tile's noisy flag for the first iteration's select
-#include "quiet_tiles.h"
 
 // This frame's pool texel of screen pixel q, or (-1, -1) where its tile has none.
 int2 variancePoolTexel(int2 q) {
@@ -66,10 +60,8 @@ FILTER_GROUPSHARED uint sVarianceId[kFilterRegion * kFilterRegion];
 FILTER_GROUPSHARED float sVarianceLuminance[kFilterRegion * kFilterRegion];
 FILTER_GROUPSHARED float sVarianceVariance[kFilterRegion * kFilterRegion];
 
-// Fills the region (id 0 outside the view) and clears the group's noisy flag; every thread of the group
-// calls it (a barrier).
+// Fills the region (id 0 outside the view); every thread of the group calls it (a barrier).
 void varianceLoadRegion(int2 origin, uint local) {
-    filterQuietClear(local);
     for (uint i = local; i < uint(kFilterRegion * kFilterRegion); i += kFilterGroupThreads) {
         int2 q = filterRegionPixel(i, origin);
         bool inside = filterInside(q, params.width, params.height);
@@ -129,8 +121,11 @@ float varianceShotNoise(int2 p, int2 origin, uint id, float accumulatedLuminance
     return quantum < 3.0e38f ? quantum * ownWeight * expected : 0.0f;
 }
 
-// Pixel p's mean and deviation of the mean stored; its quiet-tile flags (quiet_tiles.h).
-uint varianceOfPixel(uint group, int2 p, int2 origin) {
+void varianceThread(uint group, uint2 local) {
+    int2 origin = filterTileOf(tilesLoad(group)) * kFilterTileSize;
+    int2 p = origin + int2(local);
+    varianceLoadRegion(origin, local.y * uint(kFilterTileSize) + local.x);
+    if (!filterInside(p, params.width, params.height)) return;
     // Every word the first pairs pass adds into or its shares pass reads is a listed pixel's in the view.
     weightSumsStore(filterPoolWord(0u, group, p), 0u);
     int2 own = filterPoolTexel(group, p);
@@ -140,19 +135,7 @@ uint varianceOfPixel(uint group, int2 p, int2 origin) {
     float variance = 0.0f;
     if (id != 0u && n >= kVarianceTemporalHistory) variance = max(c.a * c.a, varianceLocalMeanTemporal(p, origin, id));
     else if (id != 0u) variance = varianceShotNoise(p, origin, id, filterLuminance(c.rgb));
-    float4 result = filterNearestHalf4(float4(c.rgb, varianceDeviationOfMean(variance, n)));
-    CAUSTICS_IMAGE_STORE(outColor, own, result);
-    return (filterPixelNoisy(filterLuminance(result.rgb), result.a, params.quietRelative, params.quietFloor) ? kFilterTileNoisy : 0u) |
-           (id != 0u && n < params.fullHistory ? kFilterTileYoung : 0u);   // no surface: nothing to converge
-}
-
-void varianceThread(uint group, uint2 local) {
-    int2 origin = filterTileOf(tilesLoad(group)) * kFilterTileSize;
-    int2 p = origin + int2(local);
-    uint index = local.y * uint(kFilterTileSize) + local.x;
-    varianceLoadRegion(origin, index);
-    uint flags = filterInside(p, params.width, params.height) ? varianceOfPixel(group, p, origin) : 0u;
-    filterQuietStore(group, index, flags, false);
+    CAUSTICS_IMAGE_STORE(outColor, own, filterNearestHalf4(float4(c.rgb, varianceDeviationOfMean(variance, n))));
 }
 #endif
 

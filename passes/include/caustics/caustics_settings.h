@@ -96,14 +96,6 @@ struct CausticsSettings {
     // Luminance edge-stopping: the weight is exp(-d^2 / 2) with d the luminance difference in units of
     // this many standard deviations of its estimated noise. Smaller keeps more detail and more noise.
     float filterLuminanceSigma = 1.0f;
-    // Quiet tiles leave the a-trous iterations (docs/caustics.md "Quiet tiles"): an 8x8 tile whose pixels
-    // all hold a full history (filterMaxHistory frames) takes the next iteration only while one of its
-    // pixels, or of the tiles that iteration reaches, has an estimated deviation of its mean above
-    // max(filterQuietRelative x its luminance, filterQuietFloor x white) (white = 1 / (exposure x the
-    // scene's exposure)); the others keep what the passes before gave them. A converged view then costs
-    // only the spatial filtering its noise asks for. Both 0: every tile with any noise is filtered.
-    float filterQuietRelative = 0.05f;
-    float filterQuietFloor = 1.0f / 256.0f;
     float exposure = 1.0f;
     uint32_t seed = 1;
     // Added by the module helper: which image CausticsModule's `display` output shows (FirstType and

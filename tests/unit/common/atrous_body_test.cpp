@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "caustic_filter/shaders/atrous.h"
-#include "caustic_filter/shaders/quiet_tiles.h"
 
 namespace caustics::shader {
 namespace {
@@ -96,27 +95,6 @@ TEST(AtrousBody, PackedPairWeightsKeepOnePartIn64AndAddExactlyInFixedPoint) {
     for (int k = 0; k < kAtrousPairCount; ++k) packed[k / 3] |= atrousPackWeight(0.01f * float(k + 1)) << (10 * (k % 3));
     for (int k = 0; k < kAtrousPairCount; ++k)
         EXPECT_EQ(atrousPairCode(packed, k), atrousPackWeight(0.01f * float(k + 1))) << "pair " << k;
-}
-
-// Quiet tiles (quiet_tiles.h, docs/caustics.md "Quiet tiles"): a pixel is noisy above max(relative x
-// luminance, floor), quiet at or below it; thresholds of 0 make every pixel with any deviation noisy. An
-// iteration's reach in tiles is the fewest whole tiles that cover its kernel's 2 x step pixels.
-TEST(AtrousBody, QuietPixelsAndTheReachOfAnIteration) {
-    EXPECT_FALSE(filterPixelNoisy(1.0f, 0.05f, 0.05f, 0.004f));
-    EXPECT_TRUE(filterPixelNoisy(1.0f, 0.0501f, 0.05f, 0.004f));
-    EXPECT_FALSE(filterPixelNoisy(0.01f, 0.004f, 0.05f, 0.004f));   // dim: the floor decides
-    EXPECT_TRUE(filterPixelNoisy(0.01f, 0.0041f, 0.05f, 0.004f));
-    EXPECT_TRUE(filterPixelNoisy(0.0f, 1e-30f, 0.0f, 0.0f));
-    EXPECT_FALSE(filterPixelNoisy(0.0f, 0.0f, 0.0f, 0.0f));          // a dark pixel without noise
-    for (int step = 1; step <= 128; step *= 2) {
-        const int reach = filterStepReachTiles(step);
-        EXPECT_GE(reach * kFilterTileSize, 2 * step) << step;
-        EXPECT_LT((reach - 1) * kFilterTileSize, 2 * step) << step;
-    }
-    EXPECT_NE(filterNoisyWord(7u), filterIterationsWord(7u));
-    EXPECT_EQ(filterIterationsWord(7u) + 1u, filterNoisyWord(8u));
-    // A pool tile index never reaches the flag: a 16384 x 16384 view has 2^22 tiles.
-    EXPECT_GT(kFilterLeavesIterations, (16384u / 8u) * (16384u / 8u));
 }
 
 }  // namespace
