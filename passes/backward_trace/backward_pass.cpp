@@ -105,6 +105,7 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
         f.hits = b.read(f.hits, rg::Access::SampledRead);
         f.stats = b.write(f.stats, rg::Access::StorageReadWrite);
         f.secondTypeTarget() = b.write(f.secondTypeTarget(), rg::Access::StorageReadWrite);
+        f.specularIndex = b.read(f.specularIndex, rg::Access::SampledRead);
         uint32_t maxHits = f.hitCapacity;
         CausticFrame h = f;
         return [=](rg::PassContext& ctx) {
@@ -116,12 +117,13 @@ void addBackwardPasses(rg::RenderGraph& graph, CausticFrame& f) {
                     .buffer("spheres", ctx.buffer(h.spheres))
                     .buffer("hits", ctx.buffer(h.hits))
                     .buffer("stats", ctx.buffer(h.stats))
-                    .buffer("radianceWords", ctx.buffer(h.secondTypeTarget())));
+                    .buffer("radianceWords", ctx.buffer(h.secondTypeTarget()))
+                    .texture("specularIndex", ctx.texture(h.specularIndex)));
             if (!set) return;
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setRayTracingState(r.gatherState, r.gatherTable);
             cmd.setBindingSet(0, set);
-            const shader::GatherParams push{maxHits};
+            const shader::GatherParams push{maxHits, h.width, h.secondTypeListOrder ? 1u : 0u};
             cmd.setPushConstants(&push, sizeof(push));
             // Without indirect dispatch: launched for the buffer's capacity; launches past the stored
             // count return at once.

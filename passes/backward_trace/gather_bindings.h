@@ -9,13 +9,15 @@
 
 namespace caustics::shader_bindings {
 
-constexpr std::array<Binding, 5> gatherBindingList(std::string_view radianceWord, uint32_t radianceStride) {
+constexpr std::array<Binding, 6> gatherBindingList(std::string_view radianceWord, uint32_t radianceStride) {
     return {{
         {"sphereTlas", Kind::AccelStruct, 0, 0, ""},                                       // caustics.sphereTlas
         {"spheres", Kind::StorageBufferRO, 0, 1, "CausticSphere", ImageFormat::None, 64},  // common/caustic_hit.h
         {"hits", Kind::StorageBufferRO, 0, 2, "CausticHitRecord", ImageFormat::None, 64},  // common/caustic_hit.h
         {"stats", Kind::StorageBufferRW, 0, 3, "uint"},                                    // common/caustic_stats.h
         {"radianceWords", Kind::StorageBufferRW, 0, 4, radianceWord, ImageFormat::None, radianceStride},   // 3 per pixel
+        // Each pixel's list entry when the second type is kept in list order (common/specular_list.h).
+        {"specularIndex", Kind::SampledTexture, 0, 5, "uint4"},
     }};
 }
 

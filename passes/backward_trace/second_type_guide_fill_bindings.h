@@ -11,6 +11,7 @@ inline constexpr Binding kSecondTypeGuideFillBindingList[] = {
     {"depthMotion", Kind::StorageTexture, 0, 2, "float4", ImageFormat::Rgba16f},
     {"normal", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba16f},
     {"objectId", Kind::StorageTexture, 0, 4, "uint", ImageFormat::R32ui},
+    {"specularIndex", Kind::SampledTexture, 0, 5, "uint4"},   // each pixel's list entry (common/specular_list.h)
 };
 
 inline constexpr PassBindings kSecondTypeGuideFillBindings{"second_type_guide_fill",

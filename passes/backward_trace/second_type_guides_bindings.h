@@ -14,6 +14,7 @@ inline constexpr Binding kSecondTypeGuidesBindingList[] = {
     {"gLinearDepth", Kind::SampledTexture, 0, 6, "float4"},      // the camera G-buffer's (the glass)
     {"gObjectId", Kind::SampledTexture, 0, 7, "uint"},
     {"instanceMotion", Kind::StorageBufferRO, 0, 8, "float4"},   // 3 rows per instance (common/caster_motion.h)
+    {"specularIndex", Kind::SampledTexture, 0, 9, "uint4"},   // each pixel's list entry (common/specular_list.h)
 };
 
 inline constexpr PassBindings kSecondTypeGuidesBindings{"second_type_guides", "passes/backward_trace/second_type_guides_bindings.h",

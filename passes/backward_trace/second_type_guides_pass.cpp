@@ -13,6 +13,7 @@
 #include "backward_trace/shaders/second_type_guides.h"
 #include "caustic_maps/caustic_internal.h"
 #include "caustics/rhi/log.h"
+#include "common/specular_list.h"
 #include "module/pass_bindings.h"
 
 namespace caustics {
@@ -23,6 +24,14 @@ rg::RgTexture createGuide(rg::PassBuilder& b, uint32_t w, uint32_t h, const std:
                                              .setUsage(rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage |
                                                        rhi::TextureUsage::CopySource)
                                              .setDebugName(name)));
+}
+
+// The guide images' size: the screen's, or one texel per list entry (common/specular_list.h).
+struct GuideSize {
+    uint32_t width, height;
+};
+GuideSize guideSize(const CausticFrame& f) {
+    return f.secondTypeListOrder ? GuideSize{shader::kSpecularListRow, f.listRows} : GuideSize{f.width, f.height};
 }
 
 // What the sphere pass writes: depth and motion, normal and photon weight (both half precision), and
@@ -45,25 +54,32 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SphereGuide
         .texture("sphereObjectId", ctx.texture(g.sphereObjectId))
         .texture("gLinearDepth", ctx.texture(cameraDepth))
         .texture("gObjectId", ctx.texture(cameraIds))
-        .buffer("instanceMotion", ctx.buffer(h.instanceMotionRows));
+        .buffer("instanceMotion", ctx.buffer(h.instanceMotionRows))
+        .texture("specularIndex", ctx.texture(h.specularIndex));
     rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideLayout, "caustics.secondTypeGuides", set);
     if (!bound) return;
+    const GuideSize size = guideSize(h);
     const shader::SecondTypeGuideParams push{{h.width, h.height}, *h.sphereCapacity, clear ? 1u : 0u,
-                                             h.objectMotion ? 1u : 0u, h.plan.instanceCount};
+                                             h.objectMotion ? 1u : 0u, h.plan.instanceCount, {size.width, size.height},
+                                             h.secondTypeListOrder ? 1u : 0u, 0u};
+    // The clear covers the guide images, the sphere pass the image grid (at least one thread per slot).
+    const uint32_t gridWidth = clear ? size.width : h.width, gridHeight = clear ? size.height : h.height;
     rhi::ICommandList& cmd = ctx.cmd();
     cmd.setComputePipeline(r.secondTypeGuidePipeline);
     cmd.setBindingSet(0, bound);
     cmd.setPushConstants(&push, sizeof(push));
-    cmd.dispatch((h.width + 7) / 8, (h.height + 7) / 8, 1);
+    cmd.dispatch((gridWidth + 7) / 8, (gridHeight + 7) / 8, 1);
 }
 
 // caustics.secondTypeGuides.fill: the sphere-written guides completed in place where a pixel has none,
 // and every pixel's object id.
 void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fromSpheres) {
     SecondTypeGuides& g = f.secondTypeGuides;
-    const uint32_t w = f.width, h = f.height;
+    const GuideSize size = guideSize(f);
+    const uint32_t w = size.width, h = size.height;
     graph.addPass("caustics.secondTypeGuides.fill", [&](rg::PassBuilder& b) {
         const rg::RgTexture sphereIds = b.read(fromSpheres.sphereObjectId), cameraIds = b.read(f.in->gbuffer.objectId);
+        const rg::RgTexture index = f.specularIndex = b.read(f.specularIndex, rg::Access::SampledRead);
         g.depthMotion = b.write(fromSpheres.depthMotion, rg::Access::StorageReadWrite);
         g.normal = b.write(fromSpheres.normal, rg::Access::StorageReadWrite);
         g.objectId = createGuide(b, w, h, "caustics.secondTypeObjectId", rhi::Format::R32_UINT);
@@ -77,9 +93,10 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fr
                     .texture("cameraObjectId", ctx.texture(cameraIds))
                     .texture("depthMotion", ctx.texture(out.depthMotion))
                     .texture("normal", ctx.texture(out.normal))
-                    .texture("objectId", ctx.texture(out.objectId)));
+                    .texture("objectId", ctx.texture(out.objectId))
+                    .texture("specularIndex", ctx.texture(index)));
             if (!bound) return;
-            const shader::SecondTypeGuideFillParams push{{fr.width, fr.height}};
+            const shader::SecondTypeGuideFillParams push{{fr.width, fr.height}, fr.secondTypeListOrder ? 1u : 0u, 0u};
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setComputePipeline(r.secondTypeGuideFillPipeline);
             cmd.setBindingSet(0, bound);
@@ -93,7 +110,8 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fr
 
 void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
     SphereGuides g;   // written from the spheres
-    const uint32_t w = f.width, h = f.height;
+    const GuideSize size = guideSize(f);
+    const uint32_t w = size.width, h = size.height;
     // Both passes bind the same set (one declaration); the clear reads the buffers without using them.
     for (bool clear : {true, false}) {
         graph.addPass(clear ? "caustics.secondTypeGuides.clear" : "caustics.secondTypeGuides", [&, clear](rg::PassBuilder& b) {
@@ -104,6 +122,7 @@ void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
             const rg::RgTexture cameraDepth = b.read(f.in->gbuffer.linearDepth, rg::Access::SampledRead);
             const rg::RgTexture cameraIds = b.read(f.in->gbuffer.objectId, rg::Access::SampledRead);
             f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
+            f.specularIndex = b.read(f.specularIndex, rg::Access::SampledRead);
             if (clear) {
                 // Half precision (docs/caustics.md "Second-type guides": within the filter's depth and
                 // motion tolerances, and the half of the memory).

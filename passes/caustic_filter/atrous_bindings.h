@@ -31,6 +31,7 @@ inline constexpr Binding kCausticAtrousLastBindingList[] = {
     {"weightSums", Kind::StorageBufferRO, 0, 3, "uint"},
     {"pairs", Kind::SampledTexture, 0, 4, "uint4"},
     {"outColor", Kind::StorageTexture, 0, 5, "float4", ImageFormat::Rgba32f},   // screen: caustics.radiance
+    {"specularIndex", Kind::SampledTexture, 0, 6, "uint4"},   // list order: each pixel's entry (common/specular_list.h)
 };
 
 inline constexpr PassBindings kCausticAtrousPairsBindings{"caustic_atrous_pairs", "passes/caustic_filter/atrous_bindings.h",

@@ -33,6 +33,7 @@
 #include "caustic_filter/combine_types_bindings.h"
 #include "caustic_filter/shaders/combine_types.h"
 #include "caustics/rhi/log.h"
+#include "common/specular_list.h"
 #include "module/pass_bindings.h"
 
 namespace caustics {
@@ -48,7 +49,8 @@ shader::ResolveParams resolveParams(const CausticFrame& f, bool oneBuffer) {
             1.0f / f.fixedPointScale};
 }
 
-// Records the resolve shader: words `first` and `second` into the three image slots.
+// Records the resolve shader: words `first` and `second` into the three image slots (push.width x
+// push.height texels, one per word triple).
 void recordResolve(rg::PassContext& ctx, const CausticFrame& f, const std::string& pass, rg::RgBuffer first,
                    rg::RgBuffer second, rg::RgTexture outFirst, rg::RgTexture outSecond, rg::RgTexture outCombined,
                    const shader::ResolveParams& push) {
@@ -60,7 +62,7 @@ void recordResolve(rg::PassContext& ctx, const CausticFrame& f, const std::strin
                  .texture("outCombined", ctx.texture(outCombined))
                  .desc();
     if (!d) log(LogLevel::Error, pass + ": " + d.message());
-    else dispatchImage(ctx, *f.res, f.res->filter.resolve, f.res->filter.resolveLayout, std::move(*d), push, f.width, f.height);
+    else dispatchImage(ctx, *f.res, f.res->filter.resolve, f.res->filter.resolveLayout, std::move(*d), push, push.width, push.height);
 }
 
 void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out) {
@@ -90,23 +92,28 @@ void addResolvePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
 // One type's buffer into a new texture `name` (the shader's one-buffer mode: the buffer bound twice, the
 // texture in all three image slots): the types filtered apart resolve each just before its filter run,
 // so the two buffers, the two textures and the second type's guides are never all alive at once
-// (docs/caustics.md "Second-type guides", memory).
+// (docs/caustics.md "Second-type guides", memory). listOrder: the buffer and the texture hold one texel
+// per list entry (common/specular_list.h), the texture kSpecularListRow x f.listRows.
 void addOneTypeResolvePass(rg::RenderGraph& graph, CausticFrame& f, const std::string& pass, rg::RgBuffer& words,
-                           rg::RgTexture& target, const std::string& name) {
+                           rg::RgTexture& target, const std::string& name, bool listOrder) {
     graph.addPass(pass, [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         words = b.read(words, rg::Access::SampledRead);
-        target = b.write(b.createTexture(name, screenImageDesc(f.width, f.height, name.c_str())));
+        const uint32_t w = listOrder ? shader::kSpecularListRow : f.width, h = listOrder ? f.listRows : f.height;
+        target = b.write(b.createTexture(name, screenImageDesc(w, h, name.c_str())));
         CausticFrame fr = f;
         const rg::RgBuffer in = words;
         const rg::RgTexture o = target;
-        const shader::ResolveParams push = resolveParams(f, true);
+        shader::ResolveParams push = resolveParams(f, true);
+        push.width = w;
+        push.height = h;
         return [=](rg::PassContext& ctx) { recordResolve(ctx, fr, pass, in, in, o, o, o, push); };
     });
 }
 
 // This frame's filter inputs that every pass after caustics.temporal reads.
 struct FilterFrame {
+    FilterInputLayout layout;   // where the frame inputs hold a pixel (filter_graph.h)
     FilterTiles tiles;
     rg::RgTexture guide;   // pool RGBA32UI: the a-trous guide (caustics.temporal, filterPackAtrousGuide)
     uint32_t poolTiles = 0;
@@ -126,7 +133,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     const uint32_t region = ff.poolTiles * shader::kFilterGroupThreads;
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
                                     1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f, (i & 1u) * region,
-                                    last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region};
+                                    last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region, last ? ff.layout.listOrder : 0u};
     rg::RgTexture pairs;
     graph.addPass(filterPassName(f, name + ".pairs"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
@@ -152,7 +159,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     });
     graph.addPass(filterPassName(f, name), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
-        const rg::RgTexture in = b.read(radiance), pw = b.read(pairs);
+        const rg::RgTexture in = b.read(radiance), pw = b.read(pairs), index = b.read(ff.layout.index);
         const rg::RgBuffer w = sums = last ? b.read(sums) : b.write(sums, rg::Access::StorageReadWrite);
         readTiles(b, ff.tiles, true);
         if (last) radiance = output = b.write(output);
@@ -162,16 +169,16 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
         FilterTiles t = ff.tiles;
         return [=](rg::PassContext& ctx) {
             const auto& declared = last ? shader_bindings::kCausticAtrousLastBindings : shader_bindings::kCausticAtrousBindings;
+            PassBindingSet set(declared, 0);
+            set.texture("inColor", ctx.texture(in))
+                .texture("slotMap", ctx.texture(t.slots))
+                .buffer("tiles", ctx.buffer(t.list))
+                .buffer("weightSums", ctx.buffer(w))
+                .texture("pairs", ctx.texture(pw))
+                .texture("outColor", ctx.texture(o));
+            if (last) set.texture("specularIndex", ctx.texture(index));
             dispatchDeclared(ctx, *fr.res, last ? fr.res->filter.atrousLast : fr.res->filter.atrous,
-                             last ? fr.res->filter.atrousLastLayout : fr.res->filter.atrousLayout,
-                             PassBindingSet(declared, 0)
-                                 .texture("inColor", ctx.texture(in))
-                                 .texture("slotMap", ctx.texture(t.slots))
-                                 .buffer("tiles", ctx.buffer(t.list))
-                                 .buffer("weightSums", ctx.buffer(w))
-                                 .texture("pairs", ctx.texture(pw))
-                                 .texture("outColor", ctx.texture(o)),
-                             push, t.args);
+                             last ? fr.res->filter.atrousLastLayout : fr.res->filter.atrousLayout, set, push, t.args);
         };
     });
 }
@@ -186,7 +193,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.normalRoughness), b.read(g.objectId),
-                                    b.read(hist.previousColor), b.read(hist.previousGuides), b.read(hist.previousSlots)};
+                                    b.read(hist.previousColor), b.read(hist.previousGuides), b.read(hist.previousSlots),
+                                    b.read(ff.layout.index)};
         readTiles(b, ff.tiles, false);
         hist.color = b.write(hist.color);
         hist.guides = b.write(hist.guides);
@@ -199,7 +207,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         const float pre = ff.preExposure;
         const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f,
                                              motionGuides ? 1u : 0u, f.casterMotion && !motionGuides ? 1u : 0u,
-                                             f.objectMotion && !motionGuides ? 1u : 0u, f.plan.instanceCount};
+                                             f.objectMotion && !motionGuides ? 1u : 0u, f.plan.instanceCount,
+                                             ff.layout.listOrder};
         f.casterMotionWords = b.read(f.casterMotionWords, rg::Access::SampledRead);
         f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
         const rg::RgBuffer casterMotion = f.casterMotionWords, instanceRows = f.instanceMotionRows;
@@ -224,7 +233,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
                                                        .texture("outGuides", ctx.texture(o.guides))
                                                        .texture("outFilterGuide", ctx.texture(guide))
                                                        .buffer("casterMotion", ctx.buffer(casterMotion))
-                                                       .buffer("instanceMotion", ctx.buffer(instanceRows)),
+                                                       .buffer("instanceMotion", ctx.buffer(instanceRows))
+                                                       .texture("specularIndex", ctx.texture(in[7])),
                                                    push, t.args);
             if (recorded) {
                 // Committed when recorded, not when the graph was built: this frame's copy is the next
@@ -275,7 +285,8 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     vh.builtValid = true;
     // caustics.resolve's radiance: this frame's photons, zero in every tile the list leaves out.
     FilterFrame ff;
-    ff.tiles = addTilePasses(graph, f, hist, raw, historyUsable);
+    ff.layout = filterInputLayout(f, motionGuides);
+    ff.tiles = addTilePasses(graph, f, hist, raw, historyUsable, ff.layout);
     ff.poolTiles = f.history->poolTiles;
     ff.preExposure = filterPreExposure(f);
     addTemporalPass(graph, f, hist, ff, raw, historyUsable, readCopy, motionGuides);
@@ -284,20 +295,21 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     if (s.atrousIterations == 0) {
         graph.addPass(filterPassName(f, "caustics.filterOutput"), [&](rg::PassBuilder& b) {
             b.setStages(rhi::PipelineStages::Compute);
-            const rg::RgTexture in[] = {b.read(color), b.read(guides)};
+            const rg::RgTexture in[] = {b.read(color), b.read(guides), b.read(ff.layout.index)};
             readTiles(b, ff.tiles, false);
             raw = b.write(raw, rg::Access::StorageReadWrite);
             CausticFrame fr = f;
             rg::RgTexture o = raw;
             FilterTiles t = ff.tiles;
-            const shader::FilterOutputParams push{int32_t(w), int32_t(h), 1.0f / ff.preExposure};
+            const shader::FilterOutputParams push{int32_t(w), int32_t(h), 1.0f / ff.preExposure, ff.layout.listOrder};
             return [=](rg::PassContext& ctx) {
                 dispatchDeclared(ctx, *fr.res, fr.res->filter.output, fr.res->filter.outputLayout,
                                  PassBindingSet(shader_bindings::kCausticFilterOutputBindings, 0)
                                      .texture("temporalColor", ctx.texture(in[0]))
                                      .texture("temporalGuides", ctx.texture(in[1]))
                                      .buffer("tiles", ctx.buffer(t.list))
-                                     .texture("radiance", ctx.texture(o)),
+                                     .texture("radiance", ctx.texture(o))
+                                     .texture("specularIndex", ctx.texture(in[2])),
                                  push, t.args);
             };
         });
@@ -307,7 +319,8 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
     rg::RgBuffer sums;
     graph.addPass(filterPassName(f, "caustics.variance"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
-        const rg::RgTexture in[] = {b.read(raw), b.read(color), b.read(guides), b.read(g.objectId), b.read(g.normalRoughness)};
+        const rg::RgTexture in[] = {b.read(raw), b.read(color), b.read(guides), b.read(g.objectId), b.read(g.normalRoughness),
+                                    b.read(ff.layout.index)};
         readTiles(b, ff.tiles, true);
         radiance = b.write(b.createTexture("caustics.variance", poolImageDesc(ff.poolTiles, rhi::Format::RGBA16_FLOAT,
                                                                               "caustics.variance")));
@@ -324,7 +337,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         rg::RgBuffer zeroed = sums;
         FilterTiles t = ff.tiles;
         // The second type's guides carry each pixel's photon weight (second_type_guides.h).
-        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u};
+        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u, ff.layout.listOrder};
         return [=](rg::PassContext& ctx) {
             dispatchDeclared(ctx, *fr.res, fr.res->filter.variance, fr.res->filter.varianceLayout,
                              PassBindingSet(shader_bindings::kCausticVarianceBindings, 0)
@@ -336,7 +349,8 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
                                  .texture("slotMap", ctx.texture(t.slots))
                                  .buffer("tiles", ctx.buffer(t.list))
                                  .texture("outColor", ctx.texture(o))
-                                 .buffer("weightSums", ctx.buffer(zeroed)),
+                                 .buffer("weightSums", ctx.buffer(zeroed))
+                                 .texture("specularIndex", ctx.texture(in[5])),
                              push, t.args);
         };
     });
@@ -350,15 +364,18 @@ void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
     graph.addPass("caustics.filterCombine", [&](rg::PassBuilder& b) {
         const bool firstTexture = out.firstType.valid();
         const rg::RgTexture second = b.read(out.secondType), first = firstTexture ? b.read(out.firstType) : second;
+        const FilterInputLayout layout = filterInputLayout(f, true);
+        const rg::RgTexture index = b.read(layout.index);
         out.radiance = b.write(out.radiance, firstTexture ? rg::Access::StorageWrite : rg::Access::StorageReadWrite);
         CausticFrame fr = f;
         rg::RgTexture o = out.radiance;
-        const shader::CombineTypesParams push{{f.width, f.height}, firstTexture ? 0u : 1u, 0u};
+        const shader::CombineTypesParams push{{f.width, f.height}, firstTexture ? 0u : 1u, layout.listOrder};
         return [=](rg::PassContext& ctx) {
             auto desc = PassBindingSet(shader_bindings::kCombineTypesBindings, 0)
                             .texture("firstType", ctx.texture(first))
                             .texture("secondType", ctx.texture(second))
                             .texture("radiance", ctx.texture(o))
+                            .texture("specularIndex", ctx.texture(index))
                             .desc();
             if (!desc) {
                 log(LogLevel::Error, "caustics.filterCombine: " + desc.message());
@@ -400,10 +417,11 @@ void addResolveAndFilterPasses(rg::RenderGraph& graph, CausticFrame& f, CausticO
         // filtered first, then the first type into caustics.radiance, filtered there in place, and
         // caustics.filterCombine adds the second. The guides come after the stored hits and the first
         // type's buffer is the only one left while they live (the frame's peak, docs/caustics.md).
-        addOneTypeResolvePass(graph, f, "caustics.resolve.secondType", f.radiance2, out.secondType, "caustics.secondType");
+        addOneTypeResolvePass(graph, f, "caustics.resolve.secondType", f.radiance2, out.secondType, "caustics.secondType",
+                              f.secondTypeListOrder);
         addSecondTypeGuidePasses(graph, f);
         addSecondTypeFilterChain(graph, f, out);
-        addOneTypeResolvePass(graph, f, "caustics.resolve", f.radiance1, out.radiance, "caustics.radiance");
+        addOneTypeResolvePass(graph, f, "caustics.resolve", f.radiance1, out.radiance, "caustics.radiance", false);
         out.filterTiles = addFilterChain(graph, f, out.radiance, false);
         addCombinePass(graph, f, out);
         return;

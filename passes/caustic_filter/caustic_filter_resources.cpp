@@ -20,7 +20,7 @@
 
 namespace caustics {
 
-static_assert(sizeof(shader::AtrousParams) == 32);
+static_assert(sizeof(shader::AtrousParams) == 36);
 static_assert(shader::kFilterPoolTilesPerRow == kFilterPoolTilesPerRow);
 
 Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {

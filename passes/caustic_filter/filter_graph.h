@@ -75,6 +75,19 @@ bool dispatchDeclared(rg::PassContext& ctx, CausticResources::Impl& r, const rhi
     return dispatchTiles(ctx, r, pipeline, layout, std::move(*desc), push, args);
 }
 
+// Where a filter run's frame inputs (the unfiltered radiance and the guides) hold a pixel
+// (common/specular_list.h): at the pixel, or, for the second type's run when the frame keeps the second
+// type in list order, at the pixel's list entry. `index` is what the passes bind as specularIndex (the
+// camera G-buffer's object ids, never read, when there is no list order).
+struct FilterInputLayout {
+    rg::RgTexture index;
+    uint32_t listOrder = 0;
+};
+inline FilterInputLayout filterInputLayout(const CausticFrame& f, bool secondTypeRun) {
+    if (secondTypeRun && f.secondTypeListOrder) return {f.specularIndex, 1u};
+    return {f.specularIndex.valid() ? f.specularIndex : f.in->gbuffer.objectId, 0u};
+}
+
 // The view's ping-ponged history (caustic_passes.h): last frame's (read) and this frame's (written).
 struct HistoryHandles {
     rg::RgTexture previousColor, previousGuides, previousTiles, previousSlots;
@@ -94,7 +107,7 @@ struct FilterTiles {
 };
 // caustics.filterTiles, .clear, .list and .count (the read-back of the tiles wanted, which sizes the pool).
 FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, rg::RgTexture raw,
-                          bool historyUsable);
+                          bool historyUsable, const FilterInputLayout& layout);
 
 // The tile list bindings of a pass dispatched over it: the arguments (indirect), the list and, where
 // it reads neighbours, the slot map.

@@ -65,7 +65,7 @@ void addPoolGrowthPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& 
 // (0, 1, 1, 0), then caustics.filterTiles.list lists the tiles and gives each a pool tile. Nothing after it runs
 // on an unlisted tile.
 FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, rg::RgTexture raw,
-                          bool historyUsable) {
+                          bool historyUsable, const FilterInputLayout& layout) {
     const uint32_t w = f.width, h = f.height, tilesX = (w + 7) / 8, tilesY = (h + 7) / 8;
     const uint32_t capacity = f.history->poolTiles;
     FilterTiles t;
@@ -73,7 +73,8 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
         b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
         const GBuffer& g = f.in->gbuffer;
-        const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.objectId), b.read(hist.previousTiles)};
+        const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.objectId), b.read(hist.previousTiles),
+                                    b.read(layout.index)};
         hist.tiles = b.write(hist.tiles);
         t.args = b.write(b.createBuffer("caustics.filterTileArgs",
                                         rhi::BufferDesc().setByteSize(16)
@@ -82,7 +83,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
         CausticFrame fr = f;
         rg::RgTexture o = hist.tiles;
         rg::RgBuffer args = t.args;
-        const shader::FilterTilesParams push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory};
+        const shader::FilterTilesParams push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory, layout.listOrder};
         return [=](rg::PassContext& ctx) {
             auto d = PassBindingSet(shader_bindings::kCausticFilterTilesBindings, 0)
                          .buffer("camera", ctx.buffer(fr.camera))
@@ -92,6 +93,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
                          .texture("previousTiles", ctx.texture(in[3]))
                          .texture("tileState", ctx.texture(o))
                          .buffer("tileArgs", ctx.buffer(args))
+                         .texture("specularIndex", ctx.texture(in[4]))
                          .desc();
             if (!d) log(LogLevel::Error, "caustics.filterTiles: " + d.message());
             else if (bindFilter(ctx, *fr.res, fr.res->filter.tiles, fr.res->filter.tilesLayout, std::move(*d), push))

@@ -9,6 +9,7 @@ inline constexpr Binding kCausticFilterOutputBindingList[] = {
     {"temporalGuides", Kind::SampledTexture, 0, 1, "uint2"},   // pool: n
     {"tiles", Kind::StorageBufferRO, 0, 2, "uint"},            // the tile list
     {"radiance", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba32f},   // caustics.radiance, in place
+    {"specularIndex", Kind::SampledTexture, 0, 4, "uint4"},   // list order: each pixel's entry (common/specular_list.h)
 };
 
 inline constexpr PassBindings kCausticFilterOutputBindings{"caustic_filter_output", "passes/caustic_filter/output_bindings.h",

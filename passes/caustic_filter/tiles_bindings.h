@@ -13,6 +13,7 @@ inline constexpr Binding kCausticFilterTilesBindingList[] = {
     {"previousTiles", Kind::SampledTexture, 0, 4, "uint"},       // last frame's tile state
     {"tileState", Kind::StorageTexture, 0, 5, "uint", ImageFormat::R32ui},
     {"tileArgs", Kind::StorageBufferRW, 0, 6, "uint"},           // set to (0, 1, 1, 0) for the list pass
+    {"specularIndex", Kind::SampledTexture, 0, 7, "uint4"},   // list order: each pixel's entry (common/specular_list.h)
 };
 inline constexpr Binding kCausticTileListBindingList[] = {
     {"tileState", Kind::StorageTexture, 0, 0, "uint", ImageFormat::R32ui},   // read, and 0 -> 1 for neighbours

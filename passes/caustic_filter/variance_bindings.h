@@ -14,6 +14,7 @@ inline constexpr Binding kCausticVarianceBindingList[] = {
     {"outColor", Kind::StorageTexture, 0, 6, "float4", ImageFormat::Rgba16f},   // pool
     {"gNormal", Kind::SampledTexture, 0, 7, "float4"},          // .w: photon weights (VarianceParams)
     {"weightSums", Kind::StorageBufferRW, 0, 8, "uint"},        // caustics.atrous.sums: zeroes the first region
+    {"specularIndex", Kind::SampledTexture, 0, 9, "uint4"},   // list order: each pixel's entry (common/specular_list.h)
 };
 
 inline constexpr PassBindings kCausticVarianceBindings{"caustic_variance", "passes/caustic_filter/variance_bindings.h",

@@ -128,6 +128,13 @@ struct CausticFrame {
     rg::RgBuffer emitters, forwardArgs;   // caustics.emitters -> caustics.photonPlan -> caustics.forward
     rg::RgBuffer layerPlans, owners;      // CausticLayerPlanGpu per layer; CausticMapPlan::instanceLayers
     rg::RgBuffer specularPixels, backwardArgs;   // caustics.specularPixels -> caustics.backward
+    // The second type in list order (common/specular_list.h; docs/caustics.md "Second-type memory"): its
+    // buffer, resolved image and guides hold one texel per list entry (kSpecularListRow x listRows)
+    // instead of one per pixel; specularIndex (R32UI, W x H) names each pixel's entry. Without list
+    // order specularIndex is a 1 x 1 placeholder the passes bind and never read.
+    bool secondTypeListOrder = false;
+    uint32_t listRows = 0;
+    rg::RgTexture specularIndex;
     // The sphere capacity of this frame, chosen when the graph executes (caustics/sphere_capacity.h).
     std::shared_ptr<uint32_t> sphereCapacity;
     uint32_t sphereAllocation = 0;   // slots of this frame's sphere list and AABB buffer

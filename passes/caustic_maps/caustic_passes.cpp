@@ -27,7 +27,8 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
         f.maps = buffer("caustics.maps", std::max<size_t>(1, f.plan.maps.size()) * sizeof(CausticMapGpu), storage);
         f.radiance1 = buffer("caustics.firstTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
         // One accumulation buffer for both types unless the host asked to see them apart.
-        if (f.separateTypes)
+        // (In list order caustics.specularPixels creates it, one RGB per list entry.)
+        if (f.separateTypes && !f.secondTypeListOrder)
             f.radiance2 = buffer("caustics.secondTypeBuffer", pixelBytes, storage | rhi::BufferUsage::CopySource);
         f.stats = buffer("caustics.stats", kStatCount * 4, storage | rhi::BufferUsage::CopySource);
         // The forward grid (launches, 1, 1), written by caustics.photonPlan.
@@ -62,7 +63,7 @@ void addSetupPass(rg::RenderGraph& graph, CausticFrame& f) {
             if (!maps.empty()) cmd.writeBuffer(ctx.buffer(h.maps), maps.data(), maps.size() * sizeof(CausticMapGpu));
             else cmd.fillBuffer(ctx.buffer(h.maps), 0);
             cmd.fillBuffer(ctx.buffer(h.radiance1), 0);
-            if (h.separateTypes) cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
+            if (h.separateTypes && !h.secondTypeListOrder) cmd.fillBuffer(ctx.buffer(h.radiance2), 0);
             // Every counter 0 and the fixed-point scale in the last slot (disjoint ranges: no write-after-write).
             const float scale = h.res->floatAtomics ? 0.0f : h.fixedPointScale;
             cmd.fillBuffer(ctx.buffer(h.stats), 0, 0, uint64_t(kStatFixedPointScale) * 4);
@@ -175,6 +176,8 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     f.width = in.gbuffer.width;
     f.height = in.gbuffer.height;
     f.separateTypes = in.separateTypes || filterTypesApart;
+    // Apart without an AOV that shows the second type alone: its images follow the specular pixels.
+    f.secondTypeListOrder = filterTypesApart && !in.separateTypes && !plan.maps.empty();
     f.wideFixedPoint = !res->floatAtomics && res->int64Atomics;
     f.fixedPointScale = fixedPointScale(f.wideFixedPoint, in.settings.exposure * in.scene->exposure);
     f.plan = std::move(plan);
@@ -214,6 +217,8 @@ Result<CausticOutputs> addCausticPasses(rg::RenderGraph& graph, CausticResources
     out.layerPlans = f.layerPlans;
     out.spheres = f.spheres;
     out.secondTypeGuides = f.secondTypeGuides;
+    out.secondTypeListOrder = f.secondTypeListOrder;
+    if (f.secondTypeListOrder) out.specularPixels = f.specularPixels;
     out.mapObjectIds = f.mapIds;
     out.plan = std::move(f.plan);
     return out;

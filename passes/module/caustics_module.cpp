@@ -262,7 +262,9 @@ Result<FrameOutputs> CausticsModule::addPasses(rg::RenderGraph& graph, const Fra
         if (m.photonBudget && !co.plan.maps.empty()) m.photonBudget->planFrame();   // this frame has a forward pass
         out.caustics = co.radiance;
         out.firstType = co.firstType;
-        out.secondType = co.secondType;
+        // In list order (the second type filtered apart without an AOV) the module's second-type image is
+        // not a screen image: not handed out (docs/caustics.md "Second-type memory").
+        out.secondType = co.secondTypeListOrder ? rg::RgTexture{} : co.secondType;
         out.causticStats = co.stats;
     }
     rg::RgTexture shownCaustics = out.caustics;

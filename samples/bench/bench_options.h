@@ -27,7 +27,7 @@ struct BenchOptions {
     uint32_t maxDepth = 4;
     uint32_t mapResolution = 512;
     bool filter = false;            // the paper measured with the filter off
-    bool filterSecondTypeApart = false;   // CausticsSettings::filterSecondTypeApart
+    bool filterSecondTypeApart = CausticsSettings{}.filterSecondTypeApart;
     bool secondTypeSplitLobes = true;     // CausticsSettings::secondTypeSplitLobes
     float sphereRadiusScale = CausticsSettings{}.sphereRadiusScale;
     bool viewAway = false;          // caustics / frame: the camera turned away from every caustic (--view away)

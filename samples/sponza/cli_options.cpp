@@ -96,8 +96,9 @@ const char* cliUsage() {
            "  --max-stored-hits N     forward hits kept for the second type (default 1048576)\n"
            "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
            "  --no-second-type        skip caustics seen through glass (the backward sphere pass)\n"
-           "  --filter-second-type-apart  filter the caustics seen through glass on the surface they lie on\n"
-           "                          (own guides and history; more memory, docs/caustics.md \"Second-type guides\")\n"
+           "  --filter-second-type apart|merged  filter the caustics seen through glass on the surface they lie\n"
+           "                          on (apart, the default: own guides and history, docs/caustics.md\n"
+           "                          \"Second-type guides\") or with the first type on the camera G-buffer\n"
            "  --map-occluders         caustic maps also draw occluders (default: specular objects only)\n"
            "  --exposure X            linear exposure before tone mapping (default 1)\n"
            ) + sampleControlsUsage() + animationUsage() + std::string(
@@ -124,7 +125,7 @@ bool takesValue(const std::string& a) {
     static const char* const kValueOptions[] = {
         "--scene", "--asset-root", "--sponza", "--backend", "--out", "--graph-dot", "--aov", "--camera", "--width", "--height",
         "--frames", "--map-resolution", "--max-stored-hits", "--max-depth", "--rays-per-texel", "--exposure",
-        "--reference-photons", "--script"};
+        "--reference-photons", "--script", "--filter-second-type"};
     for (const char* known : kValueOptions)
         if (a == known) return true;
     return false;
@@ -161,7 +162,7 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
         if (a == "--window") { o.window = true; continue; }
         if (a == "--no-filter") { o.filter = false; continue; }
         if (a == "--no-second-type") { o.secondType = false; continue; }
-        if (a == "--filter-second-type-apart") { o.filterSecondTypeApart = true; continue; }
+        if (a == "--filter-second-type-apart") { o.filterSecondTypeApart = true; continue; }   // the earlier spelling
         if (a == "--map-occluders") { o.mapOccluders = true; continue; }
         if (a == "--reference") { o.reference = true; continue; }
         if (a == "--validation") { o.validation = true; continue; }
@@ -178,6 +179,11 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
         } else if (a == "--out") { o.outPath = value; outGiven = true; }
         else if (a == "--graph-dot") { o.graphDotPath = value; dotGiven = true; }
         else if (a == "--script") o.scriptPath = value;
+        else if (a == "--filter-second-type") {
+            if (value != "apart" && value != "merged")
+                return makeError("--filter-second-type: expected apart or merged, got '" + value + "'");
+            o.filterSecondTypeApart = value == "apart";
+        }
         else if (a == "--aov") { CAUSTICS_TRY(o.aov, parseAov(value)); }
         else if (a == "--camera") { CAUSTICS_TRY(o.camera, parseCamera(value)); }
         else if (a == "--width") { CAUSTICS_TRY(o.width, parseUint(a, value, 1, kMaxImageSide)); }

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "caustics/caustics_settings.h"
 #include "caustics/rhi/result.h"
 #include "animation_options.h"
 #include "sample_controls.h"
@@ -45,7 +46,7 @@ struct CliOptions {
     uint32_t maxDepth = 4;
     uint32_t maxStoredHits = 1u << 20;
     bool filter = true;
-    bool filterSecondTypeApart = false;   // CausticsSettings::filterSecondTypeApart
+    bool filterSecondTypeApart = CausticsSettings{}.filterSecondTypeApart;
     bool secondType = true;
     bool mapOccluders = false;
     float exposure = 1.0f;

@@ -12,9 +12,13 @@
 #include "common/gather_disk.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (gather_bindings.h), 4 bytes.
+// Push constants (gather_bindings.h), 12 bytes.
 struct GatherParams {
     uint maxStoredHits;   // records the hit buffer holds
+    uint width;           // the image's, pixels
+    // 1: radianceWords hold the second type in list order, 3 words per entry of caustics.specularPixels'
+    // list (common/specular_list.h); 0: 3 words per pixel.
+    uint listOrder;
 };
 // The trace's payload (DXR payloads are structs): the stored hit the ray starts at.
 struct GatherPayload {
@@ -61,11 +65,16 @@ bool gatherSphereContains(uint primitive, float3 origin) {
 // Any-hit: the stored hit's radiance added into sphere `primitive`'s pixel.
 #if defined(CAUSTICS_STAGE_RAHIT)
 #include "common/radiance_atomics.h"
+#include "common/resources.h"
+#include "common/specular_list.h"
 void gatherAnyHit(uint primitive, uint hitIndex) {
     CausticSphere s = spheresLoad(primitive);
     CausticHit h = unpackCausticHit(hitsLoad(hitIndex));
     if (!gatherAccepts(s, h)) return;
-    addRadiance(s.pixel, gatherRadiance(s, h));
+    // A sphere's pixel is always listed (the backward pass launched from its entry).
+    int2 p = int2(int(s.pixel % params.width), int(s.pixel / params.width));
+    uint target = params.listOrder != 0u ? specularListEntry(CAUSTICS_TEXEL(specularIndex, int2(p.x >> 3, p.y >> 3)), p) : s.pixel;
+    addRadiance(target, gatherRadiance(s, h));
     statsAtomicAdd(kStatGatherHits, 1u);
 }
 #endif  // CAUSTICS_STAGE_RAHIT

@@ -12,11 +12,14 @@
 // which), so no thread reads a texel another one writes. The sphere-written textures are not copied:
 // at 1080p that copy was the second type's largest transient (docs/caustics.md "Second-type guides").
 #include "common/resources.h"
+#include "common/specular_list.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (second_type_guide_fill_bindings.h), 8 bytes.
+// Push constants (second_type_guide_fill_bindings.h), 16 bytes.
 struct SecondTypeGuideFillParams {
-    uint2 size;
+    uint2 size;       // the image, pixels
+    uint listOrder;   // 1: the guides hold one texel per list entry (common/specular_list.h)
+    uint pad;
 };
 
 // The k-th neighbour (k < 8): the four edge neighbours first, then the diagonals.
@@ -34,9 +37,11 @@ CAUSTICS_SHARED_END
 void secondTypeGuideFillThread(uint2 id) {
     if (id.x >= params.size.x || id.y >= params.size.y) return;
     int2 p = int2(id);
-    uint own = CAUSTICS_TEXEL_UINT(sphereObjectId, p);
+    int2 t = SPECULAR_INPUT_TEXEL(p, params.listOrder);   // the pixel's guide texel
+    if (t.x < 0) return;   // not listed: no second type, no guides
+    uint own = CAUSTICS_TEXEL_UINT(sphereObjectId, t);
     if (own != 0u) {   // the sphere pass wrote the pixel's depth, motion and normal
-        CAUSTICS_IMAGE_STORE_UINT(objectId, p, own);
+        CAUSTICS_IMAGE_STORE_UINT(objectId, t, own);
         return;
     }
     uint surface = CAUSTICS_TEXEL_UINT(cameraObjectId, p);
@@ -45,19 +50,21 @@ void secondTypeGuideFillThread(uint2 id) {
     for (uint k = 0u; k < 8u && surface != 0u; ++k) {
         int2 q = p + guideFillNeighbour(k);
         if (q.x < 0 || q.y < 0 || q.x >= int(params.size.x) || q.y >= int(params.size.y)) continue;
-        uint source = CAUSTICS_TEXEL_UINT(sphereObjectId, q);
+        int2 tq = SPECULAR_INPUT_TEXEL(q, params.listOrder);
+        if (tq.x < 0) continue;
+        uint source = CAUSTICS_TEXEL_UINT(sphereObjectId, tq);
         if (source == 0u || CAUSTICS_TEXEL_UINT(cameraObjectId, q) != surface) continue;
-        depthMotionHere = CAUSTICS_IMAGE_LOAD(depthMotion, q);
+        depthMotionHere = CAUSTICS_IMAGE_LOAD(depthMotion, tq);
         // A filled pixel's photon weight (.w) is stored negated: its sample is not the neighbour's, so the
         // filter's shot-noise estimate takes the weight but not the pixel's luminance (variance.h).
-        normalHere = CAUSTICS_IMAGE_LOAD(normal, q);
+        normalHere = CAUSTICS_IMAGE_LOAD(normal, tq);
         normalHere.w = -abs(normalHere.w);
         idHere = source;
         break;
     }
-    CAUSTICS_IMAGE_STORE(depthMotion, p, depthMotionHere);
-    CAUSTICS_IMAGE_STORE(normal, p, normalHere);
-    CAUSTICS_IMAGE_STORE_UINT(objectId, p, idHere);
+    CAUSTICS_IMAGE_STORE(depthMotion, t, depthMotionHere);
+    CAUSTICS_IMAGE_STORE(normal, t, normalHere);
+    CAUSTICS_IMAGE_STORE_UINT(objectId, t, idHere);
 }
 #endif
 

@@ -17,18 +17,23 @@
 #include "common/caustic_hit.h"
 #include "common/luminance.h"
 #include "common/resources.h"
+#include "common/specular_list.h"
 
 CAUSTICS_SHARED_BEGIN
 
-// Push constants (second_type_guides_bindings.h), 24 bytes.
+// Push constants (second_type_guides_bindings.h), 40 bytes.
 struct SecondTypeGuideParams {
     uint2 size;            // the image, pixels
     uint sphereCapacity;   // the frame's sphere slots (caustics/sphere_capacity.h)
-    uint clearPass;        // 1: zero every pixel's sphereObjectId; 0: write each sphere's guides
+    uint clearPass;        // 1: zero every texel of sphereObjectId; 0: write each sphere's guides
     // 1: instanceMotion holds every instance's rows (common/caster_motion.h): a pixel whose glass moved
     // takes the glass's motion (docs/caustics.md "Moving objects").
     uint objectMotion;
     uint instanceCount;    // instances the rows cover
+    // The guide images: W x H (listOrder 0), or one texel per list entry (listOrder 1, common/specular_list.h).
+    uint2 guideSize;
+    uint listOrder;
+    uint pad;
 };
 
 // Motion of a receiver point that was behind last frame's camera: far off screen, so no history is found
@@ -101,14 +106,14 @@ CAUSTICS_SHARED_END
 #if !defined(CAUSTICS_LANG_CPP)
 #include "bindings/second_type_guides.h"   // generated from passes/backward_trace/second_type_guides_bindings.h
 
-// Clear pass: one thread per pixel. Sphere pass: one thread per sphere slot (row-major over the image
-// grid, which has at least as many threads as sphere slots).
+// Clear pass: one thread per guide texel (the guide grid). Sphere pass: one thread per sphere slot
+// (row-major over the image grid, which has at least as many threads as sphere slots).
 void secondTypeGuidesThread(uint2 id) {
-    if (id.x >= params.size.x || id.y >= params.size.y) return;
     if (params.clearPass != 0u) {
-        CAUSTICS_IMAGE_STORE_UINT(sphereObjectId, int2(id), 0u);
+        if (id.x < params.guideSize.x && id.y < params.guideSize.y) CAUSTICS_IMAGE_STORE_UINT(sphereObjectId, int2(id), 0u);
         return;
     }
+    if (id.x >= params.size.x || id.y >= params.size.y) return;
     uint slot = id.y * params.size.x + id.x;
     if (slot >= min(countersLoad(kStatSpheres), params.sphereCapacity)) return;
     CausticSphere s = spheresLoad(slot);
@@ -130,9 +135,11 @@ void secondTypeGuidesThread(uint2 id) {
             g = secondTypeGuideThroughMovedGlass(camera, g, glassNow, glassBefore, instanceRowsApply(r0, r1, r2, s.centre),
                                                  float2(params.size));
     }
-    CAUSTICS_IMAGE_STORE(depthMotion, p, float4(g.linearDepth, g.motion.x, g.motion.y, g.previousDepth));
-    CAUSTICS_IMAGE_STORE(normal, p, float4(g.normal, g.photonWeight));
-    CAUSTICS_IMAGE_STORE_UINT(sphereObjectId, p, g.objectId);
+    int2 t = SPECULAR_INPUT_TEXEL(p, params.listOrder);   // a sphere's pixel is listed
+    if (t.x < 0) return;
+    CAUSTICS_IMAGE_STORE(depthMotion, t, float4(g.linearDepth, g.motion.x, g.motion.y, g.previousDepth));
+    CAUSTICS_IMAGE_STORE(normal, t, float4(g.normal, g.photonWeight));
+    CAUSTICS_IMAGE_STORE_UINT(sphereObjectId, t, g.objectId);
 }
 #endif
 

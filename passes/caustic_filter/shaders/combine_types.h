@@ -2,16 +2,18 @@
 #define CAUSTICS_PASS_COMBINE_TYPES_H
 // caustics.radiance = the first type filtered on the camera G-buffer (its own texture, or already in
 // caustics.radiance) + the second type filtered on its own guides (docs/caustics.md "Second-type
-// guides"), in the shared dialect (docs/shaders.md).
+// guides"), in the shared dialect (docs/shaders.md), one thread per pixel; the second type at the pixel
+// or, in list order, at its list entry (common/specular_list.h).
 // Entries: combine_types.comp, combine_types.hlsl.
 #include "common/resources.h"
+#include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
 // Push constants (combine_types_bindings.h), 16 bytes.
 struct CombineTypesParams {
     uint2 size;
     uint addToRadiance;   // 1: radiance holds the filtered first type (firstType unread): add the second
-    uint pad;             // std430 rounds the block up to its uint2's 8-byte alignment
+    uint listOrder;       // 1: secondType holds one texel per list entry (common/specular_list.h)
 };
 CAUSTICS_SHARED_END
 
@@ -22,7 +24,7 @@ void combineTypesThread(uint2 id) {
     if (id.x >= params.size.x || id.y >= params.size.y) return;
     int2 p = int2(id);
     float3 first = params.addToRadiance != 0u ? CAUSTICS_IMAGE_LOAD(radiance, p).rgb : CAUSTICS_TEXEL(firstType, p).rgb;
-    float3 sum = first + CAUSTICS_TEXEL(secondType, p).rgb;
+    float3 sum = first + FILTER_INPUT(secondType, SPECULAR_INPUT_TEXEL(p, params.listOrder)).rgb;
     CAUSTICS_IMAGE_STORE(radiance, p, float4(sum, 1.0f));
 }
 #endif

@@ -5,6 +5,7 @@
 // rounding to half and the group-shared memory spellings.
 #include "common/lang.h"
 #include "common/luminance.h"
+#include "common/specular_list.h"
 
 CAUSTICS_SHARED_BEGIN
 // The filter runs over 8x8 pixel tiles, one 8x8 group (64 threads) per listed tile (the list of
@@ -65,6 +66,11 @@ uint filterPackHalf2(float2 v) { return packHalf2x16(v); }
 float filterBitsToFloat(uint u) { return uintBitsToFloat(u); }
 uint filterFloatToBits(float v) { return floatBitsToUint(v); }
 #endif
+
+// A frame input's texel t (the pixel itself, or its list entry's texel: SPECULAR_INPUT_TEXEL,
+// common/specular_list.h), zero where t is (-1, -1): a pixel the second type's list leaves out.
+#define FILTER_INPUT(tex, t) ((t).x >= 0 ? CAUSTICS_TEXEL(tex, (t)) : float4(0.0f, 0.0f, 0.0f, 0.0f))
+#define FILTER_INPUT_UINT(tex, t) ((t).x >= 0 ? CAUSTICS_TEXEL_UINT(tex, (t)) : 0u)
 
 // v rounded to the nearest half-precision value, to be written into an RGBA16F pool image: Vulkan lets
 // the image write round towards zero (lavapipe does), which biased every store low by half an ulp on

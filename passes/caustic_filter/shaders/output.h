@@ -13,6 +13,7 @@ struct FilterOutputParams {
     int width;
     int height;
     float invPreExposure;   // pool units -> radiance
+    uint listOrder;         // 1: radiance holds the second type in list order (common/specular_list.h)
 };
 CAUSTICS_SHARED_END
 
@@ -26,7 +27,9 @@ void filterOutputThread(uint group, uint2 local) {
     int2 own = filterPoolTexel(group, p);
     // n: the high half of the history guide's first word (filterPackGuide).
     if (filterUnpackHalf2(CAUSTICS_TEXEL(temporalGuides, own).x).y <= 1.0f) return;
-    CAUSTICS_IMAGE_STORE(radiance, p, float4(CAUSTICS_TEXEL(temporalColor, own).rgb * params.invPreExposure, 1.0f));
+    int2 target = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+    if (target.x < 0) return;
+    CAUSTICS_IMAGE_STORE(radiance, target, float4(CAUSTICS_TEXEL(temporalColor, own).rgb * params.invPreExposure, 1.0f));
 }
 #endif
 

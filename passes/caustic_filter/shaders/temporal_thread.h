@@ -71,10 +71,10 @@ FILTER_GROUPSHARED float sTemporalDepth[kFilterRegion * kFilterRegion];
 void temporalLoadRegion(int2 origin, uint local, int2 size) {
     for (uint i = local; i < uint(kFilterRegion * kFilterRegion); i += kFilterGroupThreads) {
         int2 q = filterRegionPixel(i, origin);
-        bool inside = filterInside(q, size.x, size.y);
-        sTemporalId[i] = inside ? CAUSTICS_TEXEL_UINT(gObjectId, q) : 0u;
-        sTemporalLuminance[i] = inside ? filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure) : 0.0f;
-        sTemporalDepth[i] = inside ? CAUSTICS_TEXEL(gLinearDepth, q).r : 0.0f;
+        int2 t = filterInside(q, size.x, size.y) ? SPECULAR_INPUT_TEXEL(q, params.listOrder) : int2(-1, -1);
+        sTemporalId[i] = FILTER_INPUT_UINT(gObjectId, t);
+        sTemporalLuminance[i] = filterLuminance(FILTER_INPUT(current, t).rgb * params.preExposure);
+        sTemporalDepth[i] = FILTER_INPUT(gLinearDepth, t).r;
     }
     FILTER_BARRIER();
 }
@@ -191,11 +191,13 @@ void temporalThread(uint group, uint2 local) {
     temporalLoadRegion(origin, local.y * uint(kFilterTileSize) + local.x, size);
     if (!filterInside(p, size.x, size.y)) return;
     int2 pool = filterPoolTexel(group, p);
-    float3 cur = CAUSTICS_TEXEL(current, p).rgb * params.preExposure;
+    int2 inputTexel = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+    float3 cur = FILTER_INPUT(current, inputTexel).rgb * params.preExposure;
     float l = filterLuminance(cur);
-    float depth = CAUSTICS_TEXEL(gLinearDepth, p).r;
-    float3 n = CAUSTICS_TEXEL(gNormal, p).xyz;
-    uint id = CAUSTICS_TEXEL_UINT(gObjectId, p);
+    float4 depthGuide = FILTER_INPUT(gLinearDepth, inputTexel);   // .yzw: the second type's motion (motionGuides)
+    float depth = depthGuide.r;
+    float3 n = FILTER_INPUT(gNormal, inputTexel).xyz;
+    uint id = FILTER_INPUT_UINT(gObjectId, inputTexel);
     float3 color = cur;
     float moment2 = l * l;
     float historyLength = 1.0f;
@@ -218,11 +220,10 @@ void temporalThread(uint group, uint2 local) {
             carried = dot(moved, moved) > 1e-10f;   // over 10 um: not rounding
         }
         float4 clip = mul(camera.prevViewProj, float4(source, 1.0f));
-        float4 guide = CAUSTICS_TEXEL(gLinearDepth, p);
-        if (params.motionGuides != 0u) clip.w = guide.w;
+        if (params.motionGuides != 0u) clip.w = depthGuide.w;
         if (clip.w > 0.0f) {
             // Texel-centre coordinates.
-            float2 prev = params.motionGuides != 0u ? float2(p) + float2(guide.y, guide.z)
+            float2 prev = params.motionGuides != 0u ? float2(p) + float2(depthGuide.y, depthGuide.z)
                                                     : (clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f;
             int2 base = int2(floor(prev));
             float2 f = prev - float2(base);

@@ -37,10 +37,11 @@ void filterTilesThread(uint2 group, uint2 pixel, uint local) {
     int2 p = int2(pixel);
     int2 size = int2(camera.frame.xy);
     if (p.x < size.x && p.y < size.y) {
-        float3 c = CAUSTICS_TEXEL(current, p).rgb;
+        int2 t = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+        float3 c = FILTER_INPUT(current, t).rgb;
         if (max(c.r, max(c.g, c.b)) > 0.0f) FILTER_ATOMIC_OR(sPhotons, 1u);
-        float depth = CAUSTICS_TEXEL(gLinearDepth, p).r;
-        if (params.historyValid != 0u && CAUSTICS_TEXEL_UINT(gObjectId, p) != 0u && depth > 0.0f) {
+        float depth = FILTER_INPUT(gLinearDepth, t).r;
+        if (params.historyValid != 0u && FILTER_INPUT_UINT(gObjectId, t) != 0u && depth > 0.0f) {
             float4 clip = mul(camera.prevViewProj, float4(cameraWorldPosition(camera, float2(p) + 0.5f, depth), 1.0f));
             if (clip.w > 0.0f)
                 FILTER_ATOMIC_MAX(sCarried, filterCarriedState((clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f, size));

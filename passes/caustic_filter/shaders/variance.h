@@ -29,6 +29,7 @@ struct VarianceParams {
     // 1: gNormal.w holds each pixel's photon weight (the second type's guides, second_type_guides.h): one
     // photon's step in luminance differs from pixel to pixel in proportion to it.
     uint photonWeights;
+    uint listOrder;   // 1: current and the guides hold the second type in list order (common/specular_list.h)
 };
 CAUSTICS_CONST float kVarianceTemporalHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
 
@@ -67,7 +68,7 @@ void varianceLoadRegion(int2 origin, uint local) {
         bool inside = filterInside(q, params.width, params.height);
         int2 t = inside ? variancePoolTexel(q) : int2(-1, -1);
         float4 c = t.x >= 0 ? CAUSTICS_TEXEL(temporalColor, t) : float4(0.0f, 0.0f, 0.0f, 0.0f);
-        sVarianceId[i] = inside ? CAUSTICS_TEXEL_UINT(gObjectId, q) : 0u;
+        sVarianceId[i] = FILTER_INPUT_UINT(gObjectId, inside ? SPECULAR_INPUT_TEXEL(q, params.listOrder) : int2(-1, -1));
         sVarianceLuminance[i] = filterLuminance(c.rgb);
         sVarianceVariance[i] = c.a * c.a;
     }
@@ -93,7 +94,8 @@ float varianceLocalMeanTemporal(int2 p, int2 origin, uint id) {
 // A pixel's photon weight (VarianceParams::photonWeights), 1 where the pixels share one step; negative
 // where the pixel's guides were filled from a neighbour's (second_type_guide_fill.h): its sample took
 // another path, whose luminance says nothing about this receiver's step.
-float variancePhotonWeight(int2 q) { return params.photonWeights != 0u ? CAUSTICS_TEXEL(gNormal, q).w : 1.0f; }
+// t: the pixel's input texel (SPECULAR_INPUT_TEXEL), on a listed pixel.
+float variancePhotonWeight(int2 t) { return params.photonWeights != 0u ? FILTER_INPUT(gNormal, t).w : 1.0f; }
 
 // Photon shot noise q E[l] for a short history (above). With photon weights w (the second type through
 // curved glass) the step is w_p times the smallest per-weight luminance l / w of the window.
@@ -103,9 +105,11 @@ float varianceShotNoise(int2 p, int2 origin, uint id, float accumulatedLuminance
     for (int dy = -3; dy <= 3; ++dy) {
         for (int dx = -3; dx <= 3; ++dx) {
             int2 q = p + int2(dx, dy);
-            if (!filterInside(q, params.width, params.height) || CAUSTICS_TEXEL_UINT(gObjectId, q) != id) continue;
-            float l = filterLuminance(CAUSTICS_TEXEL(current, q).rgb * params.preExposure);
-            float w = variancePhotonWeight(q);
+            if (!filterInside(q, params.width, params.height)) continue;
+            int2 t = SPECULAR_INPUT_TEXEL(q, params.listOrder);
+            if (FILTER_INPUT_UINT(gObjectId, t) != id) continue;
+            float l = filterLuminance(FILTER_INPUT(current, t).rgb * params.preExposure);
+            float w = variancePhotonWeight(t);
             if (l > 0.0f && w > 0.0f) quantum = min(quantum, l / w);
             if (abs(dx) <= 1 && abs(dy) <= 1) {
                 localSum += sVarianceLuminance[filterRegionIndex(q, origin)];
@@ -116,7 +120,7 @@ float varianceShotNoise(int2 p, int2 origin, uint id, float accumulatedLuminance
     float expected = max(accumulatedLuminance, localSum / max(localCount, 1.0f));
     // A filled pixel's value is one draw of which path its sample took (zero where it left the scene):
     // its deviation is of the order of the mean itself, not of one photon's step.
-    float ownWeight = variancePhotonWeight(p);
+    float ownWeight = variancePhotonWeight(SPECULAR_INPUT_TEXEL(p, params.listOrder));
     if (ownWeight < 0.0f) return expected * expected;
     return quantum < 3.0e38f ? quantum * ownWeight * expected : 0.0f;
 }
@@ -131,7 +135,7 @@ void varianceThread(uint group, uint2 local) {
     int2 own = filterPoolTexel(group, p);
     float4 c = CAUSTICS_TEXEL(temporalColor, own);
     float n = max(varianceHistoryLength(own), 1.0f);
-    uint id = CAUSTICS_TEXEL_UINT(gObjectId, p);
+    uint id = FILTER_INPUT_UINT(gObjectId, SPECULAR_INPUT_TEXEL(p, params.listOrder));
     float variance = 0.0f;
     if (id != 0u && n >= kVarianceTemporalHistory) variance = max(c.a * c.a, varianceLocalMeanTemporal(p, origin, id));
     else if (id != 0u) variance = varianceShotNoise(p, origin, id, filterLuminance(c.rgb));

@@ -218,7 +218,8 @@ struct SecondTypeGuides {
 struct CausticOutputs {
     rg::RgTexture radiance;     // RGBA32F W x H, first + second type, filtered when settings.filter
     rg::RgTexture firstType;    // RGBA32F, unfiltered (invalid unless separateTypes)
-    rg::RgTexture secondType;   // RGBA32F, unfiltered (black when settings.secondType is off; invalid unless separateTypes)
+    rg::RgTexture secondType;   // RGBA32F, unfiltered (black when settings.secondType is off; invalid unless separateTypes;
+                                // filtered and in list order when filtered apart without separateTypes)
     rg::RgBuffer firstTypeBuffer;   // float or fixed-point RGB per pixel (both types unless separateTypes)
     rg::RgBuffer secondTypeBuffer;  // invalid unless separateTypes
     rg::RgBuffer hits;          // CausticHit[maxStoredHits]; invalid when settings.secondType is off (none stored)
@@ -227,6 +228,12 @@ struct CausticOutputs {
     rg::RgBuffer spheres;       // CausticSphere[W x H], the first min(kStatSpheres, kStatSphereCapacity)
                                 // valid (invalid when the second type did not run)
     SecondTypeGuides secondTypeGuides;   // invalid unless the second type ran (maps planned, settings.secondType)
+    // The second type in list order (common/specular_list.h; filtered apart without separateTypes):
+    // secondType and secondTypeGuides hold one texel per entry of specularPixels (each entry's pixel
+    // index; the first min(kStatSpecularPixels, kStatSphereCapacity) are this frame's), kSpecularListRow
+    // texels to a row, instead of one per pixel (docs/caustics.md "Second-type memory").
+    bool secondTypeListOrder = false;
+    rg::RgBuffer specularPixels;
     rg::RgBuffer filterTiles;   // uint32 (tiles the filter ran on, 1, 1) when settings.filter (docs/caustics.md "Tiles")
     rg::RgTexture mapObjectIds; // R32_UINT array, one layer per planned map (instance + 1; invalid if none)
     CausticMapPlan plan;        // which lights got maps, their frusta, which were skipped

@@ -34,17 +34,29 @@ std::vector<glm::vec3> rgb(const std::vector<glm::vec4>& v) {
     return out;
 }
 
+// List-ordered texels (one per entry of `list`, which names each entry's pixel) as a screen image;
+// `none` where no entry names the pixel.
+template <typename T>
+std::vector<T> toScreen(const std::vector<T>& entries, const std::vector<uint32_t>& list, uint64_t pixels, T none) {
+    std::vector<T> screen(pixels, none);
+    if (entries.empty()) return {};
+    for (size_t i = 0; i < list.size() && i < entries.size(); ++i)
+        if (list[i] < pixels) screen[list[i]] = entries[i];
+    return screen;
+}
+
 }  // namespace
 
 Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
-                               uint32_t height, const CausticsSettings& settings, uint32_t frames) {
+                               uint32_t height, const CausticsSettings& settings, uint32_t frames, bool separateTypes) {
     const std::vector<scene::Camera> cameras(std::max(frames, 1u), camera);
-    return runCaustics(device, scene, cameras, width, height, settings);
+    return runCaustics(device, scene, cameras, width, height, settings, 3, {}, separateTypes);
 }
 
 Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::span<const scene::Camera> cameras,
                                uint32_t width, uint32_t height, const CausticsSettings& settings,
-                               uint32_t framesInFlight, std::span<const std::vector<scene::Light>> lightsPerFrame) {
+                               uint32_t framesInFlight, std::span<const std::vector<scene::Light>> lightsPerFrame,
+                               bool separateTypes) {
     const uint32_t frames = uint32_t(cameras.size());
     if (!lightsPerFrame.empty() && lightsPerFrame.size() != cameras.size())
         return makeError("runCaustics: " + std::to_string(lightsPerFrame.size()) + " light lists for " +
@@ -97,11 +109,13 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         in.camera = fc.camera;
         in.settings = settings;
         in.frameIndex = frame;
+        in.separateTypes = separateTypes;
         CAUSTICS_TRY(CausticOutputs out, addCausticPasses(graph, resources, in));
         const bool last = frame + 1 == frames;
         if (last) {
             for (rg::RgTexture t : {out.firstType, out.secondType, out.radiance, g.linearDepth, g.objectId})
-                graph.markOutput(t, ResourceState::CopySource);
+                if (t.valid()) graph.markOutput(t, ResourceState::CopySource);
+            if (out.secondTypeListOrder) graph.markOutput(out.specularPixels, ResourceState::CopySource);
             graph.markOutput(out.stats, ResourceState::CopySource);
             if (out.hits.valid()) graph.markOutput(out.hits, ResourceState::CopySource);
             if (out.spheres.valid()) graph.markOutput(out.spheres, ResourceState::CopySource);
@@ -122,8 +136,14 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         if (!last) continue;
 
         // Read back everything the tests look at.
+        // The second type's images: one texel per pixel, or per list entry (list order).
+        const uint64_t secondTexels = out.secondType.valid() ? uint64_t(graph.texture(out.secondType)->desc().width) *
+                                                                   graph.texture(out.secondType)->desc().height
+                                                             : pixels;
+        const uint64_t listBytes = out.secondTypeListOrder ? graph.buffer(out.specularPixels)->desc().byteSize : 4;
         CAUSTICS_TRY(BufferHandle rbFirst, readbackBuffer(device, pixels * 16));
-        CAUSTICS_TRY(BufferHandle rbSecond, readbackBuffer(device, pixels * 16));
+        CAUSTICS_TRY(BufferHandle rbSecond, readbackBuffer(device, secondTexels * 16));
+        CAUSTICS_TRY(BufferHandle rbList, readbackBuffer(device, listBytes));
         CAUSTICS_TRY(BufferHandle rbRadiance, readbackBuffer(device, pixels * 16));
         CAUSTICS_TRY(BufferHandle rbDepth, readbackBuffer(device, pixels * 4));
         CAUSTICS_TRY(BufferHandle rbId, readbackBuffer(device, pixels * 4));
@@ -137,13 +157,14 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         CAUSTICS_TRY(BufferHandle rbPlans, readbackBuffer(device, planBytes));
         CAUSTICS_TRY(BufferHandle rbTiles, readbackBuffer(device, 4));
         const SecondTypeGuides& guides = out.secondTypeGuides;
-        CAUSTICS_TRY(BufferHandle rbGuideDepth, readbackBuffer(device, pixels * 8));
-        CAUSTICS_TRY(BufferHandle rbGuideNormal, readbackBuffer(device, pixels * 8));
-        CAUSTICS_TRY(BufferHandle rbGuideId, readbackBuffer(device, pixels * 4));
+        CAUSTICS_TRY(BufferHandle rbGuideDepth, readbackBuffer(device, secondTexels * 8));
+        CAUSTICS_TRY(BufferHandle rbGuideNormal, readbackBuffer(device, secondTexels * 8));
+        CAUSTICS_TRY(BufferHandle rbGuideId, readbackBuffer(device, secondTexels * 4));
         CAUSTICS_TRY(CommandListHandle copy, device.createCommandList());
         copy->begin();
-        copy->copyTextureToBuffer(rbFirst, 0, graph.texture(out.firstType));
-        copy->copyTextureToBuffer(rbSecond, 0, graph.texture(out.secondType));
+        if (out.firstType.valid()) copy->copyTextureToBuffer(rbFirst, 0, graph.texture(out.firstType));
+        if (out.secondType.valid()) copy->copyTextureToBuffer(rbSecond, 0, graph.texture(out.secondType));
+        if (out.secondTypeListOrder) copy->copyBuffer(rbList, 0, graph.buffer(out.specularPixels), 0, listBytes);
         copy->copyTextureToBuffer(rbRadiance, 0, graph.texture(out.radiance));
         copy->copyTextureToBuffer(rbDepth, 0, graph.texture(g.linearDepth));
         copy->copyTextureToBuffer(rbId, 0, graph.texture(g.objectId));
@@ -160,8 +181,8 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
         copy->end();
         CAUSTICS_TRY(uint64_t copyFence, device.submit(copy));
         CAUSTICS_CHECK(device.waitForFence(copyFence));
-        run.firstType = rgb(fetch<glm::vec4>(device, rbFirst, pixels));
-        run.secondType = rgb(fetch<glm::vec4>(device, rbSecond, pixels));
+        if (out.firstType.valid()) run.firstType = rgb(fetch<glm::vec4>(device, rbFirst, pixels));
+        if (out.secondType.valid()) run.secondType = rgb(fetch<glm::vec4>(device, rbSecond, secondTexels));
         run.radiance = rgb(fetch<glm::vec4>(device, rbRadiance, pixels));
         run.linearDepth = fetch<float>(device, rbDepth, pixels);
         run.objectId = fetch<uint32_t>(device, rbId, pixels);
@@ -173,11 +194,22 @@ Result<CausticRun> runCaustics(IDevice& device, const scene::Scene& scene, std::
             run.spheres = fetch<CausticSphere>(device, rbSpheres, std::min(run.stats[kStatSpheres], run.stats[kStatSphereCapacity]));
         if (out.filterTiles.valid()) run.filterTiles = fetch<uint32_t>(device, rbTiles, 1).at(0);
         if (guides.valid()) {
-            for (const glm::uvec2& h : fetch<glm::uvec2>(device, rbGuideDepth, pixels))   // RGBA16F
+            for (const glm::uvec2& h : fetch<glm::uvec2>(device, rbGuideDepth, secondTexels))   // RGBA16F
                 run.guideDepthMotion.push_back(glm::vec4(glm::unpackHalf2x16(h.x), glm::unpackHalf2x16(h.y)));
-            for (const glm::uvec2& h : fetch<glm::uvec2>(device, rbGuideNormal, pixels))
+            for (const glm::uvec2& h : fetch<glm::uvec2>(device, rbGuideNormal, secondTexels))
                 run.guideNormal.push_back(glm::vec4(glm::unpackHalf2x16(h.x), glm::unpackHalf2x16(h.y)));
-            run.guideObjectId = fetch<uint32_t>(device, rbGuideId, pixels);
+            run.guideObjectId = fetch<uint32_t>(device, rbGuideId, secondTexels);
+        }
+        run.secondTypeListOrder = out.secondTypeListOrder;
+        if (out.secondTypeListOrder) {
+            // Entry i (texel i of the list-ordered images) belongs to pixel list[i]; the listed entries are
+            // the first min(specular pixels, capacity) (common/specular_list.h).
+            const uint32_t listed = std::min(run.stats[kStatSpecularPixels], run.stats[kStatSphereCapacity]);
+            const std::vector<uint32_t> list = fetch<uint32_t>(device, rbList, listed);
+            run.secondType = toScreen(run.secondType, list, pixels, glm::vec3(0.0f));
+            run.guideDepthMotion = toScreen(run.guideDepthMotion, list, pixels, glm::vec4(0.0f));
+            run.guideNormal = toScreen(run.guideNormal, list, pixels, glm::vec4(0.0f));
+            run.guideObjectId = toScreen(run.guideObjectId, list, pixels, 0u);
         }
         run.plan = out.plan;
         if (out.layerPlans.valid()) run.layerPlans = fetch<CausticLayerPlanGpu>(device, rbPlans, out.plan.maps.size());

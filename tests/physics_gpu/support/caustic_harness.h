@@ -26,6 +26,8 @@ struct CausticRun {
     std::vector<uint32_t> guideObjectId;
     std::vector<uint32_t> objectId;
     uint32_t filterTiles = ~0u;                              // tiles the filter ran on (settings.filter)
+    bool secondTypeListOrder = false;                        // CausticOutputs::secondTypeListOrder (read back
+                                                             // into the screen images above)
     CausticMapPlan plan;
     std::vector<CausticLayerPlanGpu> layerPlans;             // one per plan.maps entry
 
@@ -34,8 +36,12 @@ struct CausticRun {
 };
 
 // frames > 1 runs the graph repeatedly (frame index 0..frames-1) and returns the last frame.
+// separateTypes (CausticFrameInputs::separateTypes): the types' own textures, as for an AOV; false runs
+// what a host without an AOV gets (with the second type filtered apart: the second type in list order,
+// common/specular_list.h, read back into screen images here), and leaves firstType empty.
 Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, const scene::Camera& camera,
-                               uint32_t width, uint32_t height, const CausticsSettings& settings, uint32_t frames = 1);
+                               uint32_t width, uint32_t height, const CausticsSettings& settings, uint32_t frames = 1,
+                               bool separateTypes = true);
 // One frame per camera (a moving view; each frame's prevViewProj is the camera before it), on
 // CausticResources made for `framesInFlight` frame slots (frame n reuses slot n % framesInFlight).
 // With `lightsPerFrame` (one light list per camera), frame n renders the scene with those lights
@@ -43,7 +49,7 @@ Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, 
 Result<CausticRun> runCaustics(rhi::IDevice& device, const scene::Scene& scene, std::span<const scene::Camera> cameras,
                                uint32_t width, uint32_t height, const CausticsSettings& settings,
                                uint32_t framesInFlight = 3,
-                               std::span<const std::vector<scene::Light>> lightsPerFrame = {});
+                               std::span<const std::vector<scene::Light>> lightsPerFrame = {}, bool separateTypes = true);
 
 // Sum of `images` over several independent frames (different seeds) divided by their count.
 }  // namespace caustics::test

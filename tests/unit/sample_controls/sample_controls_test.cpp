@@ -44,14 +44,22 @@ TEST(SampleControls, ParsesEveryControl) {
     EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 3.5f);
 }
 
-// The second type is filtered with the camera G-buffer unless asked (CausticsSettings' default).
-TEST(SampleControls, SecondTypeFilteredApartOnlyWhenAsked) {
+// The second type is filtered apart on its own guides unless asked otherwise (CausticsSettings' default).
+TEST(SampleControls, SecondTypeFilteredApartUnlessAskedMerged) {
     auto plain = parse({});
     ASSERT_TRUE(plain.ok());
     EXPECT_EQ(plain->filterSecondTypeApart, CausticsSettings{}.filterSecondTypeApart);
-    auto apart = parse({"--filter-second-type-apart"});
+    EXPECT_TRUE(plain->filterSecondTypeApart);
+    auto merged = parse({"--filter-second-type", "merged"});
+    ASSERT_TRUE(merged.ok()) << merged.message();
+    EXPECT_FALSE(merged->filterSecondTypeApart);
+    auto apart = parse({"--filter-second-type", "apart"});
     ASSERT_TRUE(apart.ok()) << apart.message();
     EXPECT_TRUE(apart->filterSecondTypeApart);
+    auto earlier = parse({"--filter-second-type-apart"});
+    ASSERT_TRUE(earlier.ok()) << earlier.message();
+    EXPECT_TRUE(earlier->filterSecondTypeApart);
+    expectRefused({"--filter-second-type", "both"}, "--filter-second-type: expected apart or merged");
 }
 
 TEST(SampleControls, RefusesBadValuesNamingTheOptionAndRange) {
