@@ -11,7 +11,11 @@ inline constexpr Binding kSecondTypeGuideFillBindingList[] = {
     {"depthMotion", Kind::StorageTexture, 0, 2, "float4", ImageFormat::Rgba16f},
     {"normal", Kind::StorageTexture, 0, 3, "float4", ImageFormat::Rgba16f},
     {"objectId", Kind::StorageTexture, 0, 4, "uint", ImageFormat::R32ui},
-    {"specularIndex", Kind::SampledTexture, 0, 5, "uint4"},   // each pixel's list entry (common/specular_list.h)
+    // List order (common/specular_list.h): each tile's run of the list, the list (pixel indices) and its
+    // length (the backward pass's grid, (count, 1, 1)).
+    {"specularIndex", Kind::SampledTexture, 0, 5, "uint4"},
+    {"specularPixels", Kind::StorageBufferRO, 0, 6, "uint"},
+    {"listCount", Kind::StorageBufferRO, 0, 7, "uint"},
 };
 
 inline constexpr PassBindings kSecondTypeGuideFillBindings{"second_type_guide_fill",

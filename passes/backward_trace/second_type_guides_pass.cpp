@@ -62,8 +62,8 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SphereGuide
     const shader::SecondTypeGuideParams push{{h.width, h.height}, *h.sphereCapacity, clear ? 1u : 0u,
                                              h.objectMotion ? 1u : 0u, h.plan.instanceCount, {size.width, size.height},
                                              h.secondTypeListOrder ? 1u : 0u, 0u};
-    // The clear covers the guide images, the sphere pass the image grid (at least one thread per slot).
-    const uint32_t gridWidth = clear ? size.width : h.width, gridHeight = clear ? size.height : h.height;
+    // The clear covers the guide images, the sphere pass the list's grid (one thread per sphere slot).
+    const uint32_t gridWidth = clear ? size.width : shader::kSpecularListRow, gridHeight = clear ? size.height : h.listRows;
     rhi::ICommandList& cmd = ctx.cmd();
     cmd.setComputePipeline(r.secondTypeGuidePipeline);
     cmd.setBindingSet(0, bound);
@@ -80,6 +80,8 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fr
     graph.addPass("caustics.secondTypeGuides.fill", [&](rg::PassBuilder& b) {
         const rg::RgTexture sphereIds = b.read(fromSpheres.sphereObjectId), cameraIds = b.read(f.in->gbuffer.objectId);
         const rg::RgTexture index = f.specularIndex = b.read(f.specularIndex, rg::Access::SampledRead);
+        f.specularPixels = b.read(f.specularPixels, rg::Access::SampledRead);
+        f.backwardArgs = b.read(f.backwardArgs, rg::Access::SampledRead);
         g.depthMotion = b.write(fromSpheres.depthMotion, rg::Access::StorageReadWrite);
         g.normal = b.write(fromSpheres.normal, rg::Access::StorageReadWrite);
         g.objectId = createGuide(b, w, h, "caustics.secondTypeObjectId", rhi::Format::R32_UINT);
@@ -94,14 +96,18 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fr
                     .texture("depthMotion", ctx.texture(out.depthMotion))
                     .texture("normal", ctx.texture(out.normal))
                     .texture("objectId", ctx.texture(out.objectId))
-                    .texture("specularIndex", ctx.texture(index)));
+                    .texture("specularIndex", ctx.texture(index))
+                    .buffer("specularPixels", ctx.buffer(fr.specularPixels))
+                    .buffer("listCount", ctx.buffer(fr.backwardArgs)));
             if (!bound) return;
             const shader::SecondTypeGuideFillParams push{{fr.width, fr.height}, fr.secondTypeListOrder ? 1u : 0u, 0u};
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setComputePipeline(r.secondTypeGuideFillPipeline);
             cmd.setBindingSet(0, bound);
             cmd.setPushConstants(&push, sizeof(push));
-            cmd.dispatch((fr.width + 7) / 8, (fr.height + 7) / 8, 1);
+            // One thread per pixel, or per list entry.
+            const GuideSize grid = fr.secondTypeListOrder ? guideSize(fr) : GuideSize{fr.width, fr.height};
+            cmd.dispatch((grid.width + 7) / 8, (grid.height + 7) / 8, 1);
         };
     });
 }

@@ -364,6 +364,8 @@ void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
     graph.addPass("caustics.filterCombine", [&](rg::PassBuilder& b) {
         const bool firstTexture = out.firstType.valid();
         const rg::RgTexture second = b.read(out.secondType), first = firstTexture ? b.read(out.firstType) : second;
+        // Through the index, one thread per pixel: a pass over the list would keep the list alive through
+        // the first type's run, the frame's peak (docs/caustics.md "Second-type memory").
         const FilterInputLayout layout = filterInputLayout(f, true);
         const rg::RgTexture index = b.read(layout.index);
         out.radiance = b.write(out.radiance, firstTexture ? rg::Access::StorageWrite : rg::Access::StorageReadWrite);

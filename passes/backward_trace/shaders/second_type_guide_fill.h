@@ -34,11 +34,18 @@ CAUSTICS_SHARED_END
 #if !defined(CAUSTICS_LANG_CPP)
 #include "bindings/second_type_guide_fill.h"   // generated from passes/backward_trace/second_type_guide_fill_bindings.h
 
+// One thread per pixel, or, in list order, per listed entry (its texel; the pixel from the list): only
+// listed pixels have guides there.
 void secondTypeGuideFillThread(uint2 id) {
-    if (id.x >= params.size.x || id.y >= params.size.y) return;
-    int2 p = int2(id);
-    int2 t = SPECULAR_INPUT_TEXEL(p, params.listOrder);   // the pixel's guide texel
-    if (t.x < 0) return;   // not listed: no second type, no guides
+    int2 p = int2(id), t = int2(id);
+    if (params.listOrder != 0u) {
+        uint entry = (id.y << kSpecularListRowShift) + id.x;
+        if (entry >= listCountLoad(0u)) return;
+        uint pixel = specularPixelsLoad(entry);
+        p = int2(int(pixel % params.size.x), int(pixel / params.size.x));
+    } else if (id.x >= params.size.x || id.y >= params.size.y) {
+        return;
+    }
     uint own = CAUSTICS_TEXEL_UINT(sphereObjectId, t);
     if (own != 0u) {   // the sphere pass wrote the pixel's depth, motion and normal
         CAUSTICS_IMAGE_STORE_UINT(objectId, t, own);

@@ -106,15 +106,14 @@ CAUSTICS_SHARED_END
 #if !defined(CAUSTICS_LANG_CPP)
 #include "bindings/second_type_guides.h"   // generated from passes/backward_trace/second_type_guides_bindings.h
 
-// Clear pass: one thread per guide texel (the guide grid). Sphere pass: one thread per sphere slot
-// (row-major over the image grid, which has at least as many threads as sphere slots).
+// Clear pass: one thread per guide texel (the guide grid). Sphere pass: one thread per sphere slot,
+// kSpecularListRow to a row (the list's grid: at least as many threads as sphere slots).
 void secondTypeGuidesThread(uint2 id) {
     if (params.clearPass != 0u) {
         if (id.x < params.guideSize.x && id.y < params.guideSize.y) CAUSTICS_IMAGE_STORE_UINT(sphereObjectId, int2(id), 0u);
         return;
     }
-    if (id.x >= params.size.x || id.y >= params.size.y) return;
-    uint slot = id.y * params.size.x + id.x;
+    uint slot = (id.y << kSpecularListRowShift) + id.x;
     if (slot >= min(countersLoad(kStatSpheres), params.sphereCapacity)) return;
     CausticSphere s = spheresLoad(slot);
     // A path that took a less probable lobe (a Fresnel reflection off the glass, say) gathers a legitimate

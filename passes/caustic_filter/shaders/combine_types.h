@@ -23,9 +23,11 @@ CAUSTICS_SHARED_END
 void combineTypesThread(uint2 id) {
     if (id.x >= params.size.x || id.y >= params.size.y) return;
     int2 p = int2(id);
+    int2 second = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+    // In list order a pixel with no entry has no second type: radiance (the first type) is left as it is.
+    if (second.x < 0) return;
     float3 first = params.addToRadiance != 0u ? CAUSTICS_IMAGE_LOAD(radiance, p).rgb : CAUSTICS_TEXEL(firstType, p).rgb;
-    float3 sum = first + FILTER_INPUT(secondType, SPECULAR_INPUT_TEXEL(p, params.listOrder)).rgb;
-    CAUSTICS_IMAGE_STORE(radiance, p, float4(sum, 1.0f));
+    CAUSTICS_IMAGE_STORE(radiance, p, float4(first + CAUSTICS_TEXEL(secondType, second).rgb, 1.0f));
 }
 #endif
 

@@ -28,7 +28,24 @@ uint filterCarriedState(float2 prev, int2 size) {
     return m;
 }
 
+// The list pass's indirect arguments start at (0 listed, 1, 1, 0 wanted): set here, not by a transfer
+// pass of their own (docs/caustics.md "Tiles").
+void filterTilesInitArgs(uint2 group, uint local) {
+    if (group.x == 0u && group.y == 0u && local < 4u) tileArgsStore(local, local == 1u || local == 2u ? 1u : 0u);
+}
+
 void filterTilesThread(uint2 group, uint2 pixel, uint local) {
+    // List order (common/specular_list.h): a tile with no listed pixel has neither this frame's second type
+    // nor a guide to carry a history with, so its state is 0 without reading its pixels (the group's
+    // threads take the same branch: the barriers below stay uniform).
+    if (params.listOrder != 0u) {
+        uint4 run = CAUSTICS_TEXEL(specularIndex, int2(group));
+        if ((run.y | run.z) == 0u) {
+            if (local == 0u) CAUSTICS_IMAGE_STORE_UINT(tileState, int2(group), 0u);
+            filterTilesInitArgs(group, local);
+            return;
+        }
+    }
     if (local == 0u) {
         sPhotons = 0u;
         sCarried = 0u;
@@ -49,9 +66,7 @@ void filterTilesThread(uint2 group, uint2 pixel, uint local) {
     }
     FILTER_BARRIER();
     if (local == 0u) CAUSTICS_IMAGE_STORE_UINT(tileState, int2(group), filterTileState(sPhotons != 0u, sCarried, params.keepFrames));
-    // The list pass's indirect arguments start at (0 listed, 1, 1, 0 wanted): set here, not by a transfer
-    // pass of their own (docs/caustics.md "Tiles").
-    if (group.x == 0u && group.y == 0u && local < 4u) tileArgsStore(local, local == 1u || local == 2u ? 1u : 0u);
+    filterTilesInitArgs(group, local);
 }
 
 #endif  // CAUSTICS_PASS_CAUSTIC_FILTER_TILES_THREAD_H

@@ -61,14 +61,35 @@ FILTER_GROUPSHARED uint sVarianceId[kFilterRegion * kFilterRegion];
 FILTER_GROUPSHARED float sVarianceLuminance[kFilterRegion * kFilterRegion];
 FILTER_GROUPSHARED float sVarianceVariance[kFilterRegion * kFilterRegion];
 
-// Fills the region (id 0 outside the view); every thread of the group calls it (a barrier).
+// List order (common/specular_list.h): the index texels of the 3x3 tiles around the group's, which hold
+// every pixel the region and the shot-noise window (3 pixels around a pixel of the tile) read, so that a
+// lookup reads group-shared memory instead of a dependent texel fetch (docs/caustics.md "Second-type memory").
+FILTER_GROUPSHARED uint4 sVarianceIndex[9];
+
+// Pixel q's input texel (SPECULAR_INPUT_TEXEL) for q in the view within 3 pixels of the group's tile.
+int2 varianceInputTexel(int2 q, int2 origin) {
+    if (params.listOrder == 0u) return q;
+    int2 t = int2(q.x >> kFilterTileShift, q.y >> kFilterTileShift) - int2(origin.x >> kFilterTileShift, origin.y >> kFilterTileShift);
+    return specularListTexel(specularListEntry(sVarianceIndex[(t.y + 1) * 3 + t.x + 1], q));
+}
+
+// Fills the region (id 0 outside the view), after the index cache; every thread of the group calls it
+// (two barriers).
 void varianceLoadRegion(int2 origin, uint local) {
+    if (params.listOrder != 0u) {   // uniform: the barrier is reached by the whole group or by none of it
+        if (local < 9u) {
+            int2 tile = int2(origin.x >> kFilterTileShift, origin.y >> kFilterTileShift) + int2(int(local % 3u) - 1, int(local / 3u) - 1);
+            int2 tiles = int2((params.width + kFilterTileSize - 1) >> kFilterTileShift, (params.height + kFilterTileSize - 1) >> kFilterTileShift);
+            sVarianceIndex[local] = filterInside(tile, tiles.x, tiles.y) ? CAUSTICS_TEXEL(specularIndex, tile) : uint4(0u, 0u, 0u, 0u);
+        }
+        FILTER_BARRIER();
+    }
     for (uint i = local; i < uint(kFilterRegion * kFilterRegion); i += kFilterGroupThreads) {
         int2 q = filterRegionPixel(i, origin);
         bool inside = filterInside(q, params.width, params.height);
         int2 t = inside ? variancePoolTexel(q) : int2(-1, -1);
         float4 c = t.x >= 0 ? CAUSTICS_TEXEL(temporalColor, t) : float4(0.0f, 0.0f, 0.0f, 0.0f);
-        sVarianceId[i] = FILTER_INPUT_UINT(gObjectId, inside ? SPECULAR_INPUT_TEXEL(q, params.listOrder) : int2(-1, -1));
+        sVarianceId[i] = FILTER_INPUT_UINT(gObjectId, inside ? varianceInputTexel(q, origin) : int2(-1, -1));
         sVarianceLuminance[i] = filterLuminance(c.rgb);
         sVarianceVariance[i] = c.a * c.a;
     }
@@ -106,7 +127,7 @@ float varianceShotNoise(int2 p, int2 origin, uint id, float accumulatedLuminance
         for (int dx = -3; dx <= 3; ++dx) {
             int2 q = p + int2(dx, dy);
             if (!filterInside(q, params.width, params.height)) continue;
-            int2 t = SPECULAR_INPUT_TEXEL(q, params.listOrder);
+            int2 t = varianceInputTexel(q, origin);
             if (FILTER_INPUT_UINT(gObjectId, t) != id) continue;
             float l = filterLuminance(FILTER_INPUT(current, t).rgb * params.preExposure);
             float w = variancePhotonWeight(t);
@@ -120,7 +141,7 @@ float varianceShotNoise(int2 p, int2 origin, uint id, float accumulatedLuminance
     float expected = max(accumulatedLuminance, localSum / max(localCount, 1.0f));
     // A filled pixel's value is one draw of which path its sample took (zero where it left the scene):
     // its deviation is of the order of the mean itself, not of one photon's step.
-    float ownWeight = variancePhotonWeight(SPECULAR_INPUT_TEXEL(p, params.listOrder));
+    float ownWeight = variancePhotonWeight(varianceInputTexel(p, origin));
     if (ownWeight < 0.0f) return expected * expected;
     return quantum < 3.0e38f ? quantum * ownWeight * expected : 0.0f;
 }
@@ -135,7 +156,7 @@ void varianceThread(uint group, uint2 local) {
     int2 own = filterPoolTexel(group, p);
     float4 c = CAUSTICS_TEXEL(temporalColor, own);
     float n = max(varianceHistoryLength(own), 1.0f);
-    uint id = FILTER_INPUT_UINT(gObjectId, SPECULAR_INPUT_TEXEL(p, params.listOrder));
+    uint id = FILTER_INPUT_UINT(gObjectId, varianceInputTexel(p, origin));
     float variance = 0.0f;
     if (id != 0u && n >= kVarianceTemporalHistory) variance = max(c.a * c.a, varianceLocalMeanTemporal(p, origin, id));
     else if (id != 0u) variance = varianceShotNoise(p, origin, id, filterLuminance(c.rgb));
