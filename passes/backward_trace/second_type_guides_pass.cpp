@@ -62,8 +62,10 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SphereGuide
     const shader::SecondTypeGuideParams push{{h.width, h.height}, *h.sphereCapacity, clear ? 1u : 0u,
                                              h.objectMotion ? 1u : 0u, h.plan.instanceCount, {size.width, size.height},
                                              h.secondTypeListOrder ? 1u : 0u, 0u};
-    // The clear covers the guide images, the sphere pass the list's grid (one thread per sphere slot).
-    const uint32_t gridWidth = clear ? size.width : shader::kSpecularListRow, gridHeight = clear ? size.height : h.listRows;
+    // The clear covers the guide images, the sphere pass a grid of the list's width with a thread per
+    // sphere slot (up to kMaxSpheresPerPixel a pixel: more than the list's entries).
+    const uint32_t gridWidth = clear ? size.width : shader::kSpecularListRow;
+    const uint32_t gridHeight = clear ? size.height : shader::specularListRows(h.sphereAllocation);
     rhi::ICommandList& cmd = ctx.cmd();
     cmd.setComputePipeline(r.secondTypeGuidePipeline);
     cmd.setBindingSet(0, bound);

@@ -5,6 +5,8 @@
 // the sphere AABB list: the slots the backward pass leaves unwritten are point boxes at the origin, which
 // the intersection shader refuses by their index. (NaN boxes, inactive by the Vulkan and DXR specs, left
 // lavapipe's BVH without a single hit.)
+#include <algorithm>
+
 #include "backward_trace/shaders/specular_pixels.h"
 #include "common/specular_list.h"
 #include "backward_trace/specular_pixels_bindings.h"
@@ -29,7 +31,8 @@ void addSpecularPixelPass(rg::RenderGraph& graph, CausticFrame& f) {
         // List order: each pixel's entry, and the second type's words one per entry, zeroed here (the
         // allocation is known from here on; common/specular_list.h).
         const bool listOrder = f.secondTypeListOrder;
-        f.listRows = shader::specularListRows(f.sphereAllocation);
+        // A pixel is listed once: the list holds at most min(allocation, W x H) entries.
+        f.listRows = shader::specularListRows(std::min(f.sphereAllocation, f.width * f.height));
         const uint32_t indexWidth = listOrder ? (f.width + 7) / 8 : 1, indexHeight = listOrder ? (f.height + 7) / 8 : 1;
         f.specularIndex = b.write(b.createTexture("caustics.specularIndex",
                                                   rhi::TextureDesc().setSize(indexWidth, indexHeight).setFormat(rhi::Format::RGBA32_UINT)

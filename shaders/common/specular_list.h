@@ -8,13 +8,14 @@
 // pixels) names the run: x its first entry, y and z which of the tile's 64 pixels are listed (bit
 // 8 (p.y mod 8) + (p.x mod 8) of y | z << 32). A pixel's entry is x plus the listed pixels before it in
 // the tile; kSpecularListNone where it is not listed (not specular, or past the sphere capacity).
-// Entry i is texel (i mod 1024, i / 1024) of the list-ordered images.
+// Entry i is texel (i mod 4096, i / 4096) of the list-ordered images: 4096 is the width every Vulkan device
+// supports (maxImageDimension2D >= 4096), and a list of one entry per pixel of an 8K view takes 8,100 rows.
 #include "common/lang.h"
 
 CAUSTICS_SHARED_BEGIN
 CAUSTICS_CONST uint kSpecularListNone = 0xFFFFFFFFu;
-CAUSTICS_CONST uint kSpecularListRowShift = 10u;   // log2 of the texels per row
-CAUSTICS_CONST uint kSpecularListRow = 1024u;
+CAUSTICS_CONST uint kSpecularListRowShift = 12u;   // log2 of the texels per row
+CAUSTICS_CONST uint kSpecularListRow = 4096u;
 
 // Entry `index`'s texel, (-1, -1) for kSpecularListNone.
 CAUSTICS_FN int2 specularListTexel(uint index) {
