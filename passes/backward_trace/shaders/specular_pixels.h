@@ -2,7 +2,8 @@
 #define CAUSTICS_PASS_SPECULAR_PIXELS_H
 // caustics.specularPixels in the shared dialect (docs/shaders.md): the camera pixels whose G-buffer
 // surface is specular (objectId != 0 and optics.w >= 0.5), compacted into a list of pixel indices cut
-// at the sphere capacity (one run per 8x8 tile; common/specular_list.h), and the grid (count, 1, 1) of the backward pass's indirect dispatch.
+// at the sphere capacity (one run per 8x8 tile; common/specular_list.h), and the grid (count, 1, 1) of
+// the backward pass's indirect dispatch.
 // caustics.backward then launches once per specular pixel instead of once per pixel
 // (docs/caustics.md, "Second-type cost"). Thread (0, 0) also records the sphere capacity the frame was
 // built with (kStatSphereCapacity), for the host's statistics and the gather's intersection shader.
