@@ -102,19 +102,19 @@ TEST_F(MemoryBudget, CausticPassesAndFilterFitTheTargetsAt1080pAnd4K) {
 TEST_F(MemoryBudget, SecondTypeFilteredApartFollowsTheSpecularPixels) {
     constexpr uint32_t w = 3840, h = 2160;
     const std::vector<MemoryEntry> apart = frameReport(gameSettings(true, true, true), w, h);
-    EXPECT_EQ(entry(apart, "caustics.firstType"), 0u);
-    const uint64_t rgba32 = uint64_t(w) * h * 16;
-    for (const char* name : {"caustics.secondType", "caustics.secondTypeDepthMotion", "caustics.secondTypeNormal",
-                             "caustics.secondTypeObjectId", "caustics.secondTypeBuffer"}) {
-        EXPECT_GT(entry(apart, name), 0u) << name;
-        EXPECT_LT(entry(apart, name), rgba32 / 8) << name << ": sized by the list, not the screen";
-    }
-    EXPECT_LT(entry(apart, "caustics.specularIndex"), uint64_t(w) * h) << "one 16-byte texel per 8x8 tile";
-
     CausticsSettings aov = gameSettings(true, true, true);
     aov.aov = CausticsAov::SecondType;
     const std::vector<MemoryEntry> screen = frameReport(aov, w, h);
-    EXPECT_GE(entry(screen, "caustics.secondType"), rgba32) << "a screen image (a device may pad it)";
+    EXPECT_EQ(entry(apart, "caustics.firstType"), 0u);
+    EXPECT_GE(entry(screen, "caustics.secondType"), uint64_t(w) * h * 16) << "a screen image (a device may pad it)";
+    // The builtin view's glass covers about a tenth of the pixels: each list-ordered image takes a small
+    // part of its screen-sized twin (measured 8x smaller, lavapipe and H200 alike, padding included).
+    for (const char* name : {"caustics.secondType", "caustics.secondTypeDepthMotion", "caustics.secondTypeNormal",
+                             "caustics.secondTypeObjectId", "caustics.secondTypeBuffer"}) {
+        EXPECT_GT(entry(apart, name), 0u) << name;
+        EXPECT_LT(entry(apart, name), entry(screen, name) / 4) << name << ": sized by the list, not the screen";
+    }
+    EXPECT_LT(entry(apart, "caustics.specularIndex"), uint64_t(w) * h) << "one 16-byte texel per 8x8 tile";
 }
 
 // The "peak in one frame" line is the graph's aliased heap, less than its transients added up.
