@@ -15,6 +15,9 @@ struct CausticFilterPipelines {
         atrousLastLayout, outputLayout, combineLayout;
     rhi::ComputePipelineHandle resolve, tiles, tileList, temporal, variance, atrousPairs, atrous, atrousLast, output;
     rhi::ComputePipelineHandle combine;   // first + second type, each filtered on its own guides
+    // The passes that read or write the frame inputs, for the second type in list order
+    // (common/specular_list.h; the *_list entries): the same layouts and push constants.
+    rhi::ComputePipelineHandle tilesList, temporalList, varianceList, atrousLastList, outputList, combineList;
 
     static Result<CausticFilterPipelines> create(rhi::IDevice& device);
 };

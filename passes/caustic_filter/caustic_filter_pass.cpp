@@ -133,7 +133,8 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     const uint32_t region = ff.poolTiles * shader::kFilterGroupThreads;
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
                                     1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f, (i & 1u) * region,
-                                    last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region, last ? ff.layout.listOrder : 0u};
+                                    last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region};
+    const bool listOrder = ff.layout.listOrder != 0;
     rg::RgTexture pairs;
     graph.addPass(filterPassName(f, name + ".pairs"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
@@ -177,7 +178,8 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
                 .texture("pairs", ctx.texture(pw))
                 .texture("outColor", ctx.texture(o));
             if (last) set.texture("specularIndex", ctx.texture(index));
-            dispatchDeclared(ctx, *fr.res, last ? fr.res->filter.atrousLast : fr.res->filter.atrous,
+            const rhi::ComputePipelineHandle& lastPipeline = listOrder ? fr.res->filter.atrousLastList : fr.res->filter.atrousLast;
+            dispatchDeclared(ctx, *fr.res, last ? lastPipeline : fr.res->filter.atrous,
                              last ? fr.res->filter.atrousLastLayout : fr.res->filter.atrousLayout, set, push, t.args);
         };
     });
@@ -207,8 +209,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         const float pre = ff.preExposure;
         const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f,
                                              motionGuides ? 1u : 0u, f.casterMotion && !motionGuides ? 1u : 0u,
-                                             f.objectMotion && !motionGuides ? 1u : 0u, f.plan.instanceCount,
-                                             ff.layout.listOrder};
+                                             f.objectMotion && !motionGuides ? 1u : 0u, f.plan.instanceCount};
+        const bool listOrder = ff.layout.listOrder != 0;
         f.casterMotionWords = b.read(f.casterMotionWords, rg::Access::SampledRead);
         f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
         const rg::RgBuffer casterMotion = f.casterMotionWords, instanceRows = f.instanceMotionRows;
@@ -218,7 +220,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
             auto push = built;
             push.historyValid &= (fr.history->valid && fr.history->parity == readCopy) ? 1u : 0u;
             push.historyScale = pre / fr.history->preExposure[readCopy];
-            const bool recorded = dispatchDeclared(ctx, *fr.res, fr.res->filter.temporal, fr.res->filter.temporalLayout,
+            const bool recorded = dispatchDeclared(ctx, *fr.res, listOrder ? fr.res->filter.temporalList : fr.res->filter.temporal,
+                                                   fr.res->filter.temporalLayout,
                                                    PassBindingSet(shader_bindings::kCausticTemporalBindings, 0)
                                                        .buffer("camera", ctx.buffer(fr.camera))
                                                        .texture("current", ctx.texture(in[0]))
@@ -301,9 +304,10 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
             CausticFrame fr = f;
             rg::RgTexture o = raw;
             FilterTiles t = ff.tiles;
-            const shader::FilterOutputParams push{int32_t(w), int32_t(h), 1.0f / ff.preExposure, ff.layout.listOrder};
+            const shader::FilterOutputParams push{int32_t(w), int32_t(h), 1.0f / ff.preExposure};
+            const bool listOrder = ff.layout.listOrder != 0;
             return [=](rg::PassContext& ctx) {
-                dispatchDeclared(ctx, *fr.res, fr.res->filter.output, fr.res->filter.outputLayout,
+                dispatchDeclared(ctx, *fr.res, listOrder ? fr.res->filter.outputList : fr.res->filter.output, fr.res->filter.outputLayout,
                                  PassBindingSet(shader_bindings::kCausticFilterOutputBindings, 0)
                                      .texture("temporalColor", ctx.texture(in[0]))
                                      .texture("temporalGuides", ctx.texture(in[1]))
@@ -337,9 +341,10 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         rg::RgBuffer zeroed = sums;
         FilterTiles t = ff.tiles;
         // The second type's guides carry each pixel's photon weight (second_type_guides.h).
-        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u, ff.layout.listOrder};
+        const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u};
+        const bool listOrder = ff.layout.listOrder != 0;
         return [=](rg::PassContext& ctx) {
-            dispatchDeclared(ctx, *fr.res, fr.res->filter.variance, fr.res->filter.varianceLayout,
+            dispatchDeclared(ctx, *fr.res, listOrder ? fr.res->filter.varianceList : fr.res->filter.variance, fr.res->filter.varianceLayout,
                              PassBindingSet(shader_bindings::kCausticVarianceBindings, 0)
                                  .texture("current", ctx.texture(in[0]))
                                  .texture("temporalColor", ctx.texture(in[1]))
@@ -371,7 +376,8 @@ void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
         out.radiance = b.write(out.radiance, firstTexture ? rg::Access::StorageWrite : rg::Access::StorageReadWrite);
         CausticFrame fr = f;
         rg::RgTexture o = out.radiance;
-        const shader::CombineTypesParams push{{f.width, f.height}, firstTexture ? 0u : 1u, layout.listOrder};
+        const shader::CombineTypesParams push{{f.width, f.height}, firstTexture ? 0u : 1u, 0u};
+        const bool listOrder = layout.listOrder != 0;
         return [=](rg::PassContext& ctx) {
             auto desc = PassBindingSet(shader_bindings::kCombineTypesBindings, 0)
                             .texture("firstType", ctx.texture(first))
@@ -383,7 +389,8 @@ void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
                 log(LogLevel::Error, "caustics.filterCombine: " + desc.message());
                 return;
             }
-            dispatchImage(ctx, *fr.res, fr.res->filter.combine, fr.res->filter.combineLayout, *desc, push, fr.width, fr.height);
+            dispatchImage(ctx, *fr.res, listOrder ? fr.res->filter.combineList : fr.res->filter.combine, fr.res->filter.combineLayout,
+                          *desc, push, fr.width, fr.height);
         };
     });
 }

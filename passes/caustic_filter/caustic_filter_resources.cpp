@@ -20,7 +20,7 @@
 
 namespace caustics {
 
-static_assert(sizeof(shader::AtrousParams) == 36);
+static_assert(sizeof(shader::AtrousParams) == 32);
 static_assert(shader::kFilterPoolTilesPerRow == kFilterPoolTilesPerRow);
 
 Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
@@ -54,6 +54,17 @@ Result<CausticFilterPipelines> CausticFilterPipelines::create(rhi::IDevice& d) {
     CAUSTICS_TRY(p.combineLayout, createPassBindingLayout(d, shader_bindings::kCombineTypesBindings, 0, rhi::ShaderStage::All));
     CAUSTICS_TRY(p.combine, createPassComputePipeline(d, "caustic_filter/combine_types.comp", {p.combineLayout},
                                                 sizeof(shader::CombineTypesParams)));
+    CAUSTICS_TRY(p.tilesList, createPassComputePipeline(d, "caustic_filter/tiles_list.comp", {p.tilesLayout}, sizeof(shader::FilterTilesParams)));
+    CAUSTICS_TRY(p.temporalList, createPassComputePipeline(d, "caustic_filter/temporal_list.comp", {p.temporalLayout},
+                                                     sizeof(shader::TemporalParams)));
+    CAUSTICS_TRY(p.varianceList, createPassComputePipeline(d, "caustic_filter/variance_list.comp", {p.varianceLayout},
+                                                     sizeof(shader::VarianceParams)));
+    CAUSTICS_TRY(p.atrousLastList, createPassComputePipeline(d, "caustic_filter/atrous_last_list.comp", {p.atrousLastLayout},
+                                                       sizeof(shader::AtrousParams)));
+    CAUSTICS_TRY(p.outputList, createPassComputePipeline(d, "caustic_filter/output_list.comp", {p.outputLayout},
+                                                   sizeof(shader::FilterOutputParams)));
+    CAUSTICS_TRY(p.combineList, createPassComputePipeline(d, "caustic_filter/combine_types_list.comp", {p.combineLayout},
+                                                    sizeof(shader::CombineTypesParams)));
     return p;
 }
 

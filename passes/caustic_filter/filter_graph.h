@@ -77,8 +77,9 @@ bool dispatchDeclared(rg::PassContext& ctx, CausticResources::Impl& r, const rhi
 
 // Where a filter run's frame inputs (the unfiltered radiance and the guides) hold a pixel
 // (common/specular_list.h): at the pixel, or, for the second type's run when the frame keeps the second
-// type in list order, at the pixel's list entry. `index` is what the passes bind as specularIndex (the
-// camera G-buffer's object ids, never read, when there is no list order).
+// type in list order, at the pixel's list entry (the passes' *_list pipelines, caustic_filter.h). `index`
+// is what the passes bind as specularIndex (the camera G-buffer's object ids, never read, when there is no
+// list order).
 struct FilterInputLayout {
     rg::RgTexture index;
     uint32_t listOrder = 0;

@@ -83,7 +83,8 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
         CausticFrame fr = f;
         rg::RgTexture o = hist.tiles;
         rg::RgBuffer args = t.args;
-        const shader::FilterTilesParams push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory, layout.listOrder};
+        const shader::FilterTilesParams push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory};
+        const bool listOrder = layout.listOrder != 0;
         return [=](rg::PassContext& ctx) {
             auto d = PassBindingSet(shader_bindings::kCausticFilterTilesBindings, 0)
                          .buffer("camera", ctx.buffer(fr.camera))
@@ -96,7 +97,8 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
                          .texture("specularIndex", ctx.texture(in[4]))
                          .desc();
             if (!d) log(LogLevel::Error, "caustics.filterTiles: " + d.message());
-            else if (bindFilter(ctx, *fr.res, fr.res->filter.tiles, fr.res->filter.tilesLayout, std::move(*d), push))
+            else if (bindFilter(ctx, *fr.res, listOrder ? fr.res->filter.tilesList : fr.res->filter.tiles,
+                                fr.res->filter.tilesLayout, std::move(*d), push))
                 ctx.cmd().dispatch(tilesX, tilesY);   // one group per tile
         };
     });

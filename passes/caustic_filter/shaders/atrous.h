@@ -15,7 +15,7 @@
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (atrous_bindings.h), 36 bytes.
+// Push constants (atrous_bindings.h), 32 bytes.
 struct AtrousParams {
     int stepWidth;
     int width;
@@ -32,9 +32,6 @@ struct AtrousParams {
     // (kAtrousNoNextSums after the last; caustics.variance zeroes the first iteration's region).
     uint sumsBase;
     uint nextSumsBase;
-    // The last iteration: 1 writes the result at each pixel's list entry (the second type in list order,
-    // common/specular_list.h), 0 at the pixel.
-    uint listOrder;
 };
 
 CAUSTICS_CONST uint kAtrousNoNextSums = 0xFFFFFFFFu;

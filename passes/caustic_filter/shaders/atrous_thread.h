@@ -129,7 +129,7 @@ void atrousThread(uint group, uint local) {
 #else
 void atrousStore(int2 p, int2 own, float3 rgb, float deviation) {
 #if defined(kAtrousLast)
-    int2 target = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+    int2 target = SPECULAR_INPUT_TEXEL(p, FILTER_LIST_ORDER_ON);
     if (target.x >= 0) CAUSTICS_IMAGE_STORE(outColor, target, float4(rgb * params.invPreExposure, 1.0f));
 #else
     CAUSTICS_IMAGE_STORE(outColor, own, filterNearestHalf4(float4(rgb, deviation)));

@@ -13,7 +13,7 @@ CAUSTICS_SHARED_BEGIN
 struct CombineTypesParams {
     uint2 size;
     uint addToRadiance;   // 1: radiance holds the filtered first type (firstType unread): add the second
-    uint listOrder;       // 1: secondType holds one texel per list entry (common/specular_list.h)
+    uint pad;             // std430 rounds the block up to its uint2's 8-byte alignment
 };
 CAUSTICS_SHARED_END
 
@@ -23,7 +23,7 @@ CAUSTICS_SHARED_END
 void combineTypesThread(uint2 id) {
     if (id.x >= params.size.x || id.y >= params.size.y) return;
     int2 p = int2(id);
-    int2 second = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+    int2 second = SPECULAR_INPUT_TEXEL(p, FILTER_LIST_ORDER_ON);
     // In list order a pixel with no entry has no second type: radiance (the first type) is left as it is.
     if (second.x < 0) return;
     float3 first = params.addToRadiance != 0u ? CAUSTICS_IMAGE_LOAD(radiance, p).rgb : CAUSTICS_TEXEL(firstType, p).rgb;

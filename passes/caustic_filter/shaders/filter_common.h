@@ -67,6 +67,15 @@ float filterBitsToFloat(uint u) { return uintBitsToFloat(u); }
 uint filterFloatToBits(float v) { return floatBitsToUint(v); }
 #endif
 
+// The frame inputs' layout, fixed per pipeline (common/specular_list.h): the *_list entries define
+// FILTER_LIST_ORDER for the second type's run in list order, so the merged default's code has no
+// list-order branch (docs/caustics.md "Second-type memory").
+#if defined(FILTER_LIST_ORDER)
+#define FILTER_LIST_ORDER_ON 1u
+#else
+#define FILTER_LIST_ORDER_ON 0u
+#endif
+
 // A frame input's texel t (the pixel itself, or its list entry's texel: SPECULAR_INPUT_TEXEL,
 // common/specular_list.h), zero where t is (-1, -1): a pixel the second type's list leaves out.
 #define FILTER_INPUT(tex, t) ((t).x >= 0 ? CAUSTICS_TEXEL(tex, (t)) : float4(0.0f, 0.0f, 0.0f, 0.0f))

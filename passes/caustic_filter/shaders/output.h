@@ -13,7 +13,6 @@ struct FilterOutputParams {
     int width;
     int height;
     float invPreExposure;   // pool units -> radiance
-    uint listOrder;         // 1: radiance holds the second type in list order (common/specular_list.h)
 };
 CAUSTICS_SHARED_END
 
@@ -27,7 +26,7 @@ void filterOutputThread(uint group, uint2 local) {
     int2 own = filterPoolTexel(group, p);
     // n: the high half of the history guide's first word (filterPackGuide).
     if (filterUnpackHalf2(CAUSTICS_TEXEL(temporalGuides, own).x).y <= 1.0f) return;
-    int2 target = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+    int2 target = SPECULAR_INPUT_TEXEL(p, FILTER_LIST_ORDER_ON);
     if (target.x < 0) return;
     CAUSTICS_IMAGE_STORE(radiance, target, float4(CAUSTICS_TEXEL(temporalColor, own).rgb * params.invPreExposure, 1.0f));
 }

@@ -31,7 +31,6 @@ struct TemporalParams {
     // instance takes its history from where that point was (docs/caustics.md "Moving objects").
     uint objectMotion;
     uint instanceCount;   // instances the rows cover
-    uint listOrder;       // 1: current and the guides hold the second type in list order (common/specular_list.h)
 };
 CAUSTICS_CONST float kTemporalRejectDeviations = 3.0f;
 CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;

@@ -71,7 +71,7 @@ FILTER_GROUPSHARED float sTemporalDepth[kFilterRegion * kFilterRegion];
 void temporalLoadRegion(int2 origin, uint local, int2 size) {
     for (uint i = local; i < uint(kFilterRegion * kFilterRegion); i += kFilterGroupThreads) {
         int2 q = filterRegionPixel(i, origin);
-        int2 t = filterInside(q, size.x, size.y) ? SPECULAR_INPUT_TEXEL(q, params.listOrder) : int2(-1, -1);
+        int2 t = filterInside(q, size.x, size.y) ? SPECULAR_INPUT_TEXEL(q, FILTER_LIST_ORDER_ON) : int2(-1, -1);
         sTemporalId[i] = FILTER_INPUT_UINT(gObjectId, t);
         sTemporalLuminance[i] = filterLuminance(FILTER_INPUT(current, t).rgb * params.preExposure);
         sTemporalDepth[i] = FILTER_INPUT(gLinearDepth, t).r;
@@ -191,7 +191,7 @@ void temporalThread(uint group, uint2 local) {
     temporalLoadRegion(origin, local.y * uint(kFilterTileSize) + local.x, size);
     if (!filterInside(p, size.x, size.y)) return;
     int2 pool = filterPoolTexel(group, p);
-    int2 inputTexel = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+    int2 inputTexel = SPECULAR_INPUT_TEXEL(p, FILTER_LIST_ORDER_ON);
     float3 cur = FILTER_INPUT(current, inputTexel).rgb * params.preExposure;
     float l = filterLuminance(cur);
     float4 depthGuide = FILTER_INPUT(gLinearDepth, inputTexel);   // .yzw: the second type's motion (motionGuides)

@@ -18,11 +18,10 @@
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (tiles_bindings.h), 12 bytes each.
+// Push constants (tiles_bindings.h), 8 and 12 bytes.
 struct FilterTilesParams {
     uint historyValid;
     uint keepFrames;   // CausticsSettings::filterMaxHistory
-    uint listOrder;    // 1: current and the guides hold the second type in list order (common/specular_list.h)
 };
 struct TileListParams {
     int tilesX;

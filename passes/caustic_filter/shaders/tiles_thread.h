@@ -38,7 +38,7 @@ void filterTilesThread(uint2 group, uint2 pixel, uint local) {
     // List order (common/specular_list.h): a tile with no listed pixel has neither this frame's second type
     // nor a guide to carry a history with, so its state is 0 without reading its pixels (the group's
     // threads take the same branch: the barriers below stay uniform).
-    if (params.listOrder != 0u) {
+    if (FILTER_LIST_ORDER_ON != 0u) {
         uint4 run = CAUSTICS_TEXEL(specularIndex, int2(group));
         if ((run.y | run.z) == 0u) {
             if (local == 0u) CAUSTICS_IMAGE_STORE_UINT(tileState, int2(group), 0u);
@@ -54,7 +54,7 @@ void filterTilesThread(uint2 group, uint2 pixel, uint local) {
     int2 p = int2(pixel);
     int2 size = int2(camera.frame.xy);
     if (p.x < size.x && p.y < size.y) {
-        int2 t = SPECULAR_INPUT_TEXEL(p, params.listOrder);
+        int2 t = SPECULAR_INPUT_TEXEL(p, FILTER_LIST_ORDER_ON);
         float3 c = FILTER_INPUT(current, t).rgb;
         if (max(c.r, max(c.g, c.b)) > 0.0f) FILTER_ATOMIC_OR(sPhotons, 1u);
         float depth = FILTER_INPUT(gLinearDepth, t).r;

@@ -29,7 +29,6 @@ struct VarianceParams {
     // 1: gNormal.w holds each pixel's photon weight (the second type's guides, second_type_guides.h): one
     // photon's step in luminance differs from pixel to pixel in proportion to it.
     uint photonWeights;
-    uint listOrder;   // 1: current and the guides hold the second type in list order (common/specular_list.h)
 };
 CAUSTICS_CONST float kVarianceTemporalHistory = 4.0f;   // SVGF's threshold for trusting the temporal moments
 
@@ -68,7 +67,7 @@ FILTER_GROUPSHARED uint4 sVarianceIndex[9];
 
 // Pixel q's input texel (SPECULAR_INPUT_TEXEL) for q in the view within 3 pixels of the group's tile.
 int2 varianceInputTexel(int2 q, int2 origin) {
-    if (params.listOrder == 0u) return q;
+    if (FILTER_LIST_ORDER_ON == 0u) return q;
     int2 t = int2(q.x >> kFilterTileShift, q.y >> kFilterTileShift) - int2(origin.x >> kFilterTileShift, origin.y >> kFilterTileShift);
     return specularListTexel(specularListEntry(sVarianceIndex[(t.y + 1) * 3 + t.x + 1], q));
 }
@@ -76,7 +75,7 @@ int2 varianceInputTexel(int2 q, int2 origin) {
 // Fills the region (id 0 outside the view), after the index cache; every thread of the group calls it
 // (two barriers).
 void varianceLoadRegion(int2 origin, uint local) {
-    if (params.listOrder != 0u) {   // uniform: the barrier is reached by the whole group or by none of it
+    if (FILTER_LIST_ORDER_ON != 0u) {   // per pipeline: the barrier is reached by the whole group or by none of it
         if (local < 9u) {
             int2 tile = int2(origin.x >> kFilterTileShift, origin.y >> kFilterTileShift) + int2(int(local % 3u) - 1, int(local / 3u) - 1);
             int2 tiles = int2((params.width + kFilterTileSize - 1) >> kFilterTileShift, (params.height + kFilterTileSize - 1) >> kFilterTileShift);
