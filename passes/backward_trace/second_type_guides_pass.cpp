@@ -108,7 +108,7 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fr
             cmd.setBindingSet(0, bound);
             cmd.setPushConstants(&push, sizeof(push));
             // One thread per pixel, or per list entry.
-            const GuideSize grid = fr.secondTypeListOrder ? guideSize(fr) : GuideSize{fr.width, fr.height};
+            const GuideSize grid = guideSize(fr);
             cmd.dispatch((grid.width + 7) / 8, (grid.height + 7) / 8, 1);
         };
     });

@@ -134,7 +134,7 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     const shader::AtrousParams push{int32_t(1) << i, int32_t(f.width), int32_t(f.height), s.filterLuminanceSigma,
                                     1.0f / ff.preExposure, jitteredGuides ? 1.0f : 0.0f, (i & 1u) * region,
                                     last ? shader::kAtrousNoNextSums : ((i + 1) & 1u) * region};
-    const bool listOrder = ff.layout.listOrder != 0;
+    const bool listOrder = ff.layout.listOrder;
     rg::RgTexture pairs;
     graph.addPass(filterPassName(f, name + ".pairs"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
@@ -210,7 +210,7 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f,
                                              motionGuides ? 1u : 0u, f.casterMotion && !motionGuides ? 1u : 0u,
                                              f.objectMotion && !motionGuides ? 1u : 0u, f.plan.instanceCount};
-        const bool listOrder = ff.layout.listOrder != 0;
+        const bool listOrder = ff.layout.listOrder;
         f.casterMotionWords = b.read(f.casterMotionWords, rg::Access::SampledRead);
         f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
         const rg::RgBuffer casterMotion = f.casterMotionWords, instanceRows = f.instanceMotionRows;
@@ -305,7 +305,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
             rg::RgTexture o = raw;
             FilterTiles t = ff.tiles;
             const shader::FilterOutputParams push{int32_t(w), int32_t(h), 1.0f / ff.preExposure};
-            const bool listOrder = ff.layout.listOrder != 0;
+            const bool listOrder = ff.layout.listOrder;
             return [=](rg::PassContext& ctx) {
                 dispatchDeclared(ctx, *fr.res, listOrder ? fr.res->filter.outputList : fr.res->filter.output, fr.res->filter.outputLayout,
                                  PassBindingSet(shader_bindings::kCausticFilterOutputBindings, 0)
@@ -342,7 +342,7 @@ rg::RgBuffer addFilterChain(rg::RenderGraph& graph, CausticFrame& f, rg::RgTextu
         FilterTiles t = ff.tiles;
         // The second type's guides carry each pixel's photon weight (second_type_guides.h).
         const shader::VarianceParams push{int32_t(w), int32_t(h), ff.preExposure, motionGuides ? 1u : 0u};
-        const bool listOrder = ff.layout.listOrder != 0;
+        const bool listOrder = ff.layout.listOrder;
         return [=](rg::PassContext& ctx) {
             dispatchDeclared(ctx, *fr.res, listOrder ? fr.res->filter.varianceList : fr.res->filter.variance, fr.res->filter.varianceLayout,
                              PassBindingSet(shader_bindings::kCausticVarianceBindings, 0)
@@ -377,7 +377,7 @@ void addCombinePass(rg::RenderGraph& graph, CausticFrame& f, CausticOutputs& out
         CausticFrame fr = f;
         rg::RgTexture o = out.radiance;
         const shader::CombineTypesParams push{{f.width, f.height}, firstTexture ? 0u : 1u, 0u};
-        const bool listOrder = layout.listOrder != 0;
+        const bool listOrder = layout.listOrder;
         return [=](rg::PassContext& ctx) {
             auto desc = PassBindingSet(shader_bindings::kCombineTypesBindings, 0)
                             .texture("firstType", ctx.texture(first))

@@ -82,11 +82,11 @@ bool dispatchDeclared(rg::PassContext& ctx, CausticResources::Impl& r, const rhi
 // list order).
 struct FilterInputLayout {
     rg::RgTexture index;
-    uint32_t listOrder = 0;
+    bool listOrder = false;
 };
 inline FilterInputLayout filterInputLayout(const CausticFrame& f, bool secondTypeRun) {
-    if (secondTypeRun && f.secondTypeListOrder) return {f.specularIndex, 1u};
-    return {f.specularIndex.valid() ? f.specularIndex : f.in->gbuffer.objectId, 0u};
+    if (secondTypeRun && f.secondTypeListOrder) return {f.specularIndex, true};
+    return {f.specularIndex.valid() ? f.specularIndex : f.in->gbuffer.objectId, false};
 }
 
 // The view's ping-ponged history (caustic_passes.h): last frame's (read) and this frame's (written).

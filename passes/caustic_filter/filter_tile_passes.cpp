@@ -84,7 +84,7 @@ FilterTiles addTilePasses(rg::RenderGraph& graph, CausticFrame& f, HistoryHandle
         rg::RgTexture o = hist.tiles;
         rg::RgBuffer args = t.args;
         const shader::FilterTilesParams push{historyUsable ? 1u : 0u, f.in->settings.filterMaxHistory};
-        const bool listOrder = layout.listOrder != 0;
+        const bool listOrder = layout.listOrder;
         return [=](rg::PassContext& ctx) {
             auto d = PassBindingSet(shader_bindings::kCausticFilterTilesBindings, 0)
                          .buffer("camera", ctx.buffer(fr.camera))

@@ -26,22 +26,14 @@ CAUSTICS_SHARED_END
 
 #if !defined(CAUSTICS_LANG_CPP)
 #include "bindings/specular_pixels.h"   // generated from passes/backward_trace/specular_pixels_bindings.h
+#include "common/group_shared.h"
 #include "common/resources.h"
-#if defined(CAUSTICS_LANG_HLSL)
-#define SPECULAR_GROUPSHARED groupshared
-#define SPECULAR_BARRIER() GroupMemoryBarrierWithGroupSync()
-#define SPECULAR_ATOMIC_OR(target, value) InterlockedOr(target, value)
-#else
-#define SPECULAR_GROUPSHARED shared
-#define SPECULAR_BARRIER() barrier()
-#define SPECULAR_ATOMIC_OR(target, value) atomicOr(target, value)
-#endif
 
 // The group's 8x8 tile: which pixels are specular, which of them are listed (bits as in
 // common/specular_list.h), and the tile's first list entry.
-SPECULAR_GROUPSHARED uint sSpecular[2];
-SPECULAR_GROUPSHARED uint sListed[2];
-SPECULAR_GROUPSHARED uint sFirstEntry;
+CAUSTICS_GROUPSHARED uint sSpecular[2];
+CAUSTICS_GROUPSHARED uint sListed[2];
+CAUSTICS_GROUPSHARED uint sFirstEntry;
 
 // One 8x8 group per tile; `local` = 8 (p.y mod 8) + (p.x mod 8). The tile's specular pixels take one run
 // of the list (one atomic add per tile), in scan order within the tile: each pixel's entry follows from
@@ -52,29 +44,29 @@ void specularPixelsThread(uint2 p, uint2 tile, uint local) {
         sSpecular[local] = 0u;
         sListed[local] = 0u;
     }
-    SPECULAR_BARRIER();
+    CAUSTICS_GROUP_BARRIER();
     bool specular = p.x < params.width && p.y < params.height &&
                     gbufferTexelIsSpecular(CAUSTICS_TEXEL_UINT(gObjectId, int2(p)), CAUSTICS_TEXEL(gOptics, int2(p)));
     uint word = local >> 5, bit = 1u << (local & 31u);
-    if (specular) SPECULAR_ATOMIC_OR(sSpecular[word], bit);
-    SPECULAR_BARRIER();
+    if (specular) CAUSTICS_GROUP_ATOMIC_OR(sSpecular[word], bit);
+    CAUSTICS_GROUP_BARRIER();
     // Every specular pixel is counted (it sizes the next frame's capacity), only those below the
     // capacity are listed: past it there is no sphere slot.
     if (local == 0u) {
         uint count = SPECULAR_BIT_COUNT(sSpecular[0]) + SPECULAR_BIT_COUNT(sSpecular[1]);
         sFirstEntry = count != 0u ? statsAtomicAdd(kStatSpecularPixels, count) : 0u;
     }
-    SPECULAR_BARRIER();
+    CAUSTICS_GROUP_BARRIER();
     if (specular) {
         uint entry = sFirstEntry + SPECULAR_BIT_COUNT(sSpecular[word] & (bit - 1u)) + (word != 0u ? SPECULAR_BIT_COUNT(sSpecular[0]) : 0u);
         if (entry < params.sphereCapacity) {
             specularPixelsStore(entry, p.y * params.width + p.x);
             argsAtomicAdd(0u, 1u);
-            SPECULAR_ATOMIC_OR(sListed[word], bit);
+            CAUSTICS_GROUP_ATOMIC_OR(sListed[word], bit);
         }
     }
     if (params.writeIndex == 0u) return;
-    SPECULAR_BARRIER();
+    CAUSTICS_GROUP_BARRIER();
     if (local == 0u) CAUSTICS_IMAGE_STORE(specularIndex, int2(tile), uint4(sFirstEntry, sListed[0], sListed[1], 0u));
 }
 #endif  // !CAUSTICS_LANG_CPP

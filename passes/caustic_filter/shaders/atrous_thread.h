@@ -38,7 +38,7 @@
 // every tap in the group's tile and its 8 neighbours: sSlots[0..8] holds them row by row from the one
 // above left. From kFilterTileSize on (the fourth iteration and later), tap (dx, dy) of every pixel of
 // the group lies in the tile (dx, dy) x step / kFilterTileSize away: sSlots holds the 25, by tap.
-FILTER_GROUPSHARED uint sSlots[25];
+CAUSTICS_GROUPSHARED uint sSlots[25];
 
 bool atrousSlotsByTap() { return params.stepWidth >= kFilterTileSize; }
 
@@ -51,7 +51,7 @@ int2 atrousLoadSlots(uint group, uint local) {
         int2 tiles = int2((params.width + kFilterTileSize - 1) >> kFilterTileShift, (params.height + kFilterTileSize - 1) >> kFilterTileShift);
         sSlots[local] = filterInside(t, tiles.x, tiles.y) ? CAUSTICS_TEXEL_UINT(slotMap, t) : kFilterNoSlot;
     }
-    FILTER_BARRIER();
+    CAUSTICS_GROUP_BARRIER();
     return tile;
 }
 

@@ -2,7 +2,7 @@
 #define CAUSTICS_PASS_CAUSTIC_FILTER_COMMON_H
 // What the caustic filter's shared-dialect bodies share (docs/shaders.md; docs/caustics.md "Filter",
 // "Tiles", "Memory"): the tiles, the pool, luminance; and, GLSL and HLSL only, the bit casts, the
-// rounding to half and the group-shared memory spellings.
+// rounding to half; group-shared memory is spelled in common/group_shared.h.
 #include "common/lang.h"
 #include "common/luminance.h"
 #include "common/specular_list.h"
@@ -51,16 +51,13 @@ CAUSTICS_FN float filterLuminance(float3 c) { return rec709Luminance(c); }
 CAUSTICS_SHARED_END
 
 #if !defined(CAUSTICS_LANG_CPP)
+#include "common/group_shared.h"
 #if defined(CAUSTICS_LANG_HLSL)
-#define FILTER_GROUPSHARED groupshared
-#define FILTER_BARRIER() GroupMemoryBarrierWithGroupSync()
 float2 filterUnpackHalf2(uint u) { return float2(f16tof32(u & 0xFFFFu), f16tof32(u >> 16)); }
 uint filterPackHalf2(float2 v) { return f32tof16(v.x) | (f32tof16(v.y) << 16); }
 float filterBitsToFloat(uint u) { return asfloat(u); }
 uint filterFloatToBits(float v) { return asuint(v); }
 #else
-#define FILTER_GROUPSHARED shared
-#define FILTER_BARRIER() barrier()
 float2 filterUnpackHalf2(uint u) { return unpackHalf2x16(u); }
 uint filterPackHalf2(float2 v) { return packHalf2x16(v); }
 float filterBitsToFloat(uint u) { return uintBitsToFloat(u); }

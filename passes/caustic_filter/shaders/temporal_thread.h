@@ -63,9 +63,9 @@ uint4 filterPackAtrousGuide(float depth, float3 n, uint id, float2 gradZ) {
 // This frame's object id, pre-exposed luminance and linear depth over the group's region (filter_common.h),
 // loaded once per group: the rejection test's 3x3 and the depth slopes read them there instead of
 // fetching each texel up to nine times per group (docs/caustics.md "Cost").
-FILTER_GROUPSHARED uint sTemporalId[kFilterRegion * kFilterRegion];
-FILTER_GROUPSHARED float sTemporalLuminance[kFilterRegion * kFilterRegion];
-FILTER_GROUPSHARED float sTemporalDepth[kFilterRegion * kFilterRegion];
+CAUSTICS_GROUPSHARED uint sTemporalId[kFilterRegion * kFilterRegion];
+CAUSTICS_GROUPSHARED float sTemporalLuminance[kFilterRegion * kFilterRegion];
+CAUSTICS_GROUPSHARED float sTemporalDepth[kFilterRegion * kFilterRegion];
 
 // Fills the region (id 0 outside the view); every thread of the group calls it (a barrier).
 void temporalLoadRegion(int2 origin, uint local, int2 size) {
@@ -76,7 +76,7 @@ void temporalLoadRegion(int2 origin, uint local, int2 size) {
         sTemporalLuminance[i] = filterLuminance(FILTER_INPUT(current, t).rgb * params.preExposure);
         sTemporalDepth[i] = FILTER_INPUT(gLinearDepth, t).r;
     }
-    FILTER_BARRIER();
+    CAUSTICS_GROUP_BARRIER();
 }
 
 // Last frame's pool texel of screen texel q, or (-1, -1) where its tile kept no history.

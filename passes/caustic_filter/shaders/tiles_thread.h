@@ -3,18 +3,11 @@
 // caustics.filterTiles' thread function (GLSL and HLSL; tiles.h says what it computes).
 #include "tiles.h"
 // The entry includes the camera's struct first (scene/camera.glsl or .hlsli; temporal_thread.h says why).
-#if defined(CAUSTICS_LANG_HLSL)
-#define FILTER_ATOMIC_OR(target, value) InterlockedOr(target, value)
-#define FILTER_ATOMIC_MAX(target, value) InterlockedMax(target, value)
-#else
-#define FILTER_ATOMIC_OR(target, value) atomicOr(target, value)
-#define FILTER_ATOMIC_MAX(target, value) atomicMax(target, value)
-#endif
 #include "bindings/caustic_filter_tiles.h"   // generated from passes/caustic_filter/tiles_bindings.h
 #include "common/resources.h"
 
-FILTER_GROUPSHARED uint sPhotons;
-FILTER_GROUPSHARED uint sCarried;
+CAUSTICS_GROUPSHARED uint sPhotons;
+CAUSTICS_GROUPSHARED uint sCarried;
 
 // Largest previous tile state among the history texels caustics.temporal may read for a pixel that
 // reprojects to `prev`: the 2x2 bilinear taps and the 3x3 around the nearest texel.
@@ -50,21 +43,21 @@ void filterTilesThread(uint2 group, uint2 pixel, uint local) {
         sPhotons = 0u;
         sCarried = 0u;
     }
-    FILTER_BARRIER();
+    CAUSTICS_GROUP_BARRIER();
     int2 p = int2(pixel);
     int2 size = int2(camera.frame.xy);
     if (p.x < size.x && p.y < size.y) {
         int2 t = SPECULAR_INPUT_TEXEL(p, FILTER_LIST_ORDER_ON);
         float3 c = FILTER_INPUT(current, t).rgb;
-        if (max(c.r, max(c.g, c.b)) > 0.0f) FILTER_ATOMIC_OR(sPhotons, 1u);
+        if (max(c.r, max(c.g, c.b)) > 0.0f) CAUSTICS_GROUP_ATOMIC_OR(sPhotons, 1u);
         float depth = FILTER_INPUT(gLinearDepth, t).r;
         if (params.historyValid != 0u && FILTER_INPUT_UINT(gObjectId, t) != 0u && depth > 0.0f) {
             float4 clip = mul(camera.prevViewProj, float4(cameraWorldPosition(camera, float2(p) + 0.5f, depth), 1.0f));
             if (clip.w > 0.0f)
-                FILTER_ATOMIC_MAX(sCarried, filterCarriedState((clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f, size));
+                CAUSTICS_GROUP_ATOMIC_MAX(sCarried, filterCarriedState((clip.xy / clip.w * 0.5f + 0.5f) * float2(size) - 0.5f, size));
         }
     }
-    FILTER_BARRIER();
+    CAUSTICS_GROUP_BARRIER();
     if (local == 0u) CAUSTICS_IMAGE_STORE_UINT(tileState, int2(group), filterTileState(sPhotons != 0u, sCarried, params.keepFrames));
     filterTilesInitArgs(group, local);
 }

@@ -56,14 +56,14 @@ float varianceHistoryLength(int2 t) { return filterUnpackHalf2(CAUSTICS_TEXEL(te
 // per-frame variance, over the group's region (filter_common.h), loaded once per group: the 3x3 means
 // below read them there instead of fetching each texel up to nine times per group (docs/caustics.md
 // "Cost"). A pixel without a pool texel counts as zero.
-FILTER_GROUPSHARED uint sVarianceId[kFilterRegion * kFilterRegion];
-FILTER_GROUPSHARED float sVarianceLuminance[kFilterRegion * kFilterRegion];
-FILTER_GROUPSHARED float sVarianceVariance[kFilterRegion * kFilterRegion];
+CAUSTICS_GROUPSHARED uint sVarianceId[kFilterRegion * kFilterRegion];
+CAUSTICS_GROUPSHARED float sVarianceLuminance[kFilterRegion * kFilterRegion];
+CAUSTICS_GROUPSHARED float sVarianceVariance[kFilterRegion * kFilterRegion];
 
 // List order (common/specular_list.h): the index texels of the 3x3 tiles around the group's, which hold
 // every pixel the region and the shot-noise window (3 pixels around a pixel of the tile) read, so that a
 // lookup reads group-shared memory instead of a dependent texel fetch (docs/caustics.md "Second-type memory").
-FILTER_GROUPSHARED uint4 sVarianceIndex[9];
+CAUSTICS_GROUPSHARED uint4 sVarianceIndex[9];
 
 // Pixel q's input texel (SPECULAR_INPUT_TEXEL) for q in the view within 3 pixels of the group's tile.
 int2 varianceInputTexel(int2 q, int2 origin) {
@@ -81,7 +81,7 @@ void varianceLoadRegion(int2 origin, uint local) {
             int2 tiles = int2((params.width + kFilterTileSize - 1) >> kFilterTileShift, (params.height + kFilterTileSize - 1) >> kFilterTileShift);
             sVarianceIndex[local] = filterInside(tile, tiles.x, tiles.y) ? CAUSTICS_TEXEL(specularIndex, tile) : uint4(0u, 0u, 0u, 0u);
         }
-        FILTER_BARRIER();
+        CAUSTICS_GROUP_BARRIER();
     }
     for (uint i = local; i < uint(kFilterRegion * kFilterRegion); i += kFilterGroupThreads) {
         int2 q = filterRegionPixel(i, origin);
@@ -92,7 +92,7 @@ void varianceLoadRegion(int2 origin, uint local) {
         sVarianceLuminance[i] = filterLuminance(c.rgb);
         sVarianceVariance[i] = c.a * c.a;
     }
-    FILTER_BARRIER();
+    CAUSTICS_GROUP_BARRIER();
 }
 
 // 3x3 mean of the neighbours' temporal variance on the same object (SVGF prefilters the variance the
