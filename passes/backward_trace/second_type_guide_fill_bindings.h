@@ -16,6 +16,14 @@ inline constexpr Binding kSecondTypeGuideFillBindingList[] = {
     {"specularIndex", Kind::SampledTexture, 0, 5, "uint4"},
     {"specularPixels", Kind::StorageBufferRO, 0, 6, "uint"},
     {"listCount", Kind::StorageBufferRO, 0, 7, "uint"},
+    // The glass pass (a pixel whose receiver agrees with too few neighbours is filtered on the glass the
+    // camera sees): the camera and its G-buffer's depth and normal, and the instances' motion rows.
+    {"camera", Kind::ConstantBuffer, 0, 8, "CameraConstants"},   // caustics.camera (common/camera.h)
+    {"cameraLinearDepth", Kind::SampledTexture, 0, 9, "float4"},
+    {"cameraNormal", Kind::SampledTexture, 0, 10, "float4"},
+    {"instanceMotion", Kind::StorageBufferRO, 0, 11, "float4"},   // 3 rows per instance (common/caster_motion.h)
+    // The screen layout: which pixels are specular (traced), from the G-buffer's optics.
+    {"cameraOptics", Kind::SampledTexture, 0, 12, "float4"},
 };
 
 inline constexpr PassBindings kSecondTypeGuideFillBindings{"second_type_guide_fill",

@@ -1,9 +1,10 @@
-// caustics.secondTypeGuides.clear, caustics.secondTypeGuides and caustics.secondTypeGuides.fill: the
+// caustics.secondTypeGuides.clear, caustics.secondTypeGuides, .fill and .glass: the
 // second type's own filter guides (passes/backward_trace/shaders/second_type_guides.h and
 // second_type_guide_fill.h; docs/caustics.md "Second-type guides"), written from this frame's spheres
 // (caustics.backward), then filled in place where a pixel's sample made none, so that the filter can run
 // the second type on the receiver seen through the glass instead of on the glass the camera G-buffer
-// holds. Declared after the resolve (caustic_filter_pass.cpp): the guides then do not share the frame's
+// holds, except where the receiver is no surface it can follow (too few neighbours agree: those pixels
+// take the glass's guides). Declared after the resolve (caustic_filter_pass.cpp): the guides then do not share the frame's
 // peak with the stored hits and the radiance buffers.
 #include <string>
 
@@ -73,25 +74,38 @@ void recordGuides(rg::PassContext& ctx, const CausticFrame& h, const SphereGuide
     cmd.dispatch((gridWidth + 7) / 8, (gridHeight + 7) / 8, 1);
 }
 
-// caustics.secondTypeGuides.fill: the sphere-written guides completed in place where a pixel has none,
-// and every pixel's object id.
-void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fromSpheres) {
+// caustics.secondTypeGuides.fill (glass false): the sphere-written guides completed in place where a
+// pixel has none, every pixel's object id, and the mark of those whose receiver too few neighbours agree
+// with; caustics.secondTypeGuides.glass (glass true): the marked pixels take the glass's guides.
+void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fromSpheres, bool glass) {
     SecondTypeGuides& g = f.secondTypeGuides;
     const GuideSize size = guideSize(f);
-    const uint32_t w = size.width, h = size.height;
-    graph.addPass("caustics.secondTypeGuides.fill", [&](rg::PassBuilder& b) {
-        const rg::RgTexture sphereIds = b.read(fromSpheres.sphereObjectId), cameraIds = b.read(f.in->gbuffer.objectId);
+    graph.addPass(glass ? "caustics.secondTypeGuides.glass" : "caustics.secondTypeGuides.fill", [&, glass](rg::PassBuilder& b) {
+        // The glass pass reads no sphere id (its slot takes the camera's ids): the sphere ids live no longer
+        // than the fill.
+        const rg::RgTexture cameraIds = b.read(f.in->gbuffer.objectId);
+        const rg::RgTexture sphereIds = glass ? cameraIds : b.read(fromSpheres.sphereObjectId);
+        const rg::RgTexture cameraDepth = b.read(f.in->gbuffer.linearDepth, rg::Access::SampledRead);
+        const rg::RgTexture cameraNormal = b.read(f.in->gbuffer.normalRoughness, rg::Access::SampledRead);
+        // Only the screen layout tests which pixels are specular (in list order every entry is): in list
+        // order the slot takes the normal, so the optics live no longer than before (MemoryBudget.*).
+        const rg::RgTexture cameraOptics =
+            f.secondTypeListOrder ? cameraNormal : b.read(f.in->gbuffer.optics, rg::Access::SampledRead);
         const rg::RgTexture index = f.specularIndex = b.read(f.specularIndex, rg::Access::SampledRead);
         f.specularPixels = b.read(f.specularPixels, rg::Access::SampledRead);
         f.backwardArgs = b.read(f.backwardArgs, rg::Access::SampledRead);
-        g.depthMotion = b.write(fromSpheres.depthMotion, rg::Access::StorageReadWrite);
-        g.normal = b.write(fromSpheres.normal, rg::Access::StorageReadWrite);
-        g.objectId = createGuide(b, w, h, "caustics.secondTypeObjectId", rhi::Format::R32_UINT);
+        f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
+        f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
+        g.depthMotion = b.write(glass ? g.depthMotion : fromSpheres.depthMotion, rg::Access::StorageReadWrite);
+        g.normal = b.write(glass ? g.normal : fromSpheres.normal, rg::Access::StorageReadWrite);
+        g.objectId = glass ? b.write(g.objectId, rg::Access::StorageReadWrite)
+                           : createGuide(b, size.width, size.height, "caustics.secondTypeObjectId", rhi::Format::R32_UINT);
         CausticFrame fr = f;
         SecondTypeGuides out = g;
         return [=](rg::PassContext& ctx) {
             CausticResources::Impl& r = *fr.res;
-            rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideFillLayout, "caustics.secondTypeGuides.fill",
+            rhi::BindingSetHandle bound = r.makeSet(*ctx.device(), r.secondTypeGuideFillLayout,
+                glass ? "caustics.secondTypeGuides.glass" : "caustics.secondTypeGuides.fill",
                 PassBindingSet(shader_bindings::kSecondTypeGuideFillBindings, 0)
                     .texture("sphereObjectId", ctx.texture(sphereIds))
                     .texture("cameraObjectId", ctx.texture(cameraIds))
@@ -100,9 +114,15 @@ void addFillPass(rg::RenderGraph& graph, CausticFrame& f, const SphereGuides& fr
                     .texture("objectId", ctx.texture(out.objectId))
                     .texture("specularIndex", ctx.texture(index))
                     .buffer("specularPixels", ctx.buffer(fr.specularPixels))
-                    .buffer("listCount", ctx.buffer(fr.backwardArgs)));
+                    .buffer("listCount", ctx.buffer(fr.backwardArgs))
+                    .buffer("camera", ctx.buffer(fr.camera))
+                    .texture("cameraLinearDepth", ctx.texture(cameraDepth))
+                    .texture("cameraNormal", ctx.texture(cameraNormal))
+                    .texture("cameraOptics", ctx.texture(cameraOptics))
+                    .buffer("instanceMotion", ctx.buffer(fr.instanceMotionRows)));
             if (!bound) return;
-            const shader::SecondTypeGuideFillParams push{{fr.width, fr.height}, fr.secondTypeListOrder ? 1u : 0u, 0u};
+            const shader::SecondTypeGuideFillParams push{{fr.width, fr.height}, fr.secondTypeListOrder ? 1u : 0u, glass ? 1u : 0u,
+                                                         fr.objectMotion ? 1u : 0u, fr.plan.instanceCount};
             rhi::ICommandList& cmd = ctx.cmd();
             cmd.setComputePipeline(r.secondTypeGuideFillPipeline);
             cmd.setBindingSet(0, bound);
@@ -147,7 +167,8 @@ void addSecondTypeGuidePasses(rg::RenderGraph& graph, CausticFrame& f) {
             return [=](rg::PassContext& ctx) { recordGuides(ctx, fr, out, cameraDepth, cameraIds, clear); };
         });
     }
-    addFillPass(graph, f, g);
+    addFillPass(graph, f, g, false);
+    addFillPass(graph, f, g, true);
 }
 
 }  // namespace caustics

@@ -14,6 +14,7 @@
 #define CAUSTICS_IMAGE_STORE(img, p, v) (img)[(p)] = (v)
 #define CAUSTICS_IMAGE_STORE_UINT(img, p, u) (img)[(p)] = (u)
 #define CAUSTICS_IMAGE_LOAD(img, p) (img)[(p)]
+#define CAUSTICS_IMAGE_LOAD_UINT(img, p) (img)[(p)]
 #elif defined(CAUSTICS_LANG_GLSL)
 #define CAUSTICS_TEXEL(tex, p) texelFetch((tex), (p), 0)
 #define CAUSTICS_TEXEL_UINT(tex, p) texelFetch((tex), (p), 0).r
@@ -21,6 +22,7 @@
 #define CAUSTICS_IMAGE_STORE(img, p, v) imageStore((img), (p), (v))
 #define CAUSTICS_IMAGE_STORE_UINT(img, p, u) imageStore((img), (p), uvec4(u))
 #define CAUSTICS_IMAGE_LOAD(img, p) imageLoad((img), (p))
+#define CAUSTICS_IMAGE_LOAD_UINT(img, p) imageLoad((img), (p)).r
 #endif
 
 #endif  // CAUSTICS_COMMON_RESOURCES_H

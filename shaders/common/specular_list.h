@@ -24,6 +24,9 @@ CAUSTICS_FN int2 specularListTexel(uint index) {
 }
 // Rows of the list-ordered images for `entries` list entries (at least one).
 CAUSTICS_FN uint specularListRows(uint entries) { return max((entries + kSpecularListRow - 1u) >> kSpecularListRowShift, 1u); }
+// Whether a G-buffer texel (its object id and optics, common/scene.h sceneOpticsEncoding) is specular:
+// the pixels the list holds (up to the sphere capacity) and the backward pass traces.
+CAUSTICS_FN bool gbufferTexelIsSpecular(uint objectId, float4 optics) { return objectId != 0u && optics.w >= 0.5f; }
 CAUSTICS_SHARED_END
 
 #if !defined(CAUSTICS_LANG_CPP)

@@ -20,8 +20,6 @@ struct SpecularPixelParams {
     uint sphereCapacity;   // list entries: one sphere slot each (caustics/sphere_capacity.h)
     uint writeIndex;       // 1: every pixel's entry into specularIndex (the second type in list order)
 };
-// Whether a G-buffer texel (its object id and optics, common/scene.h sceneOpticsEncoding) is specular.
-CAUSTICS_FN bool gbufferTexelIsSpecular(uint objectId, float4 optics) { return objectId != 0u && optics.w >= 0.5f; }
 CAUSTICS_SHARED_END
 
 #if !defined(CAUSTICS_LANG_CPP)

@@ -4,22 +4,17 @@
 #include "tiles.h"
 #include "bindings/caustic_tile_list.h"   // generated from passes/caustic_filter/tiles_bindings.h
 #include "common/resources.h"
-#if defined(CAUSTICS_LANG_HLSL)
-#define TILE_STATE_LOAD(t) tileState[(t)]
-#else
-#define TILE_STATE_LOAD(t) imageLoad(tileState, (t)).r
-#endif
 
 void tileListThread(uint2 id) {
     int2 t = int2(id);
     if (t.x >= params.tilesX || t.y >= params.tilesY) return;
-    uint state = TILE_STATE_LOAD(t);
+    uint state = CAUSTICS_IMAGE_LOAD_UINT(tileState, t);
     bool listed = state != 0u;
     for (int dy = -1; dy <= 1 && !listed; ++dy)
         for (int dx = -1; dx <= 1 && !listed; ++dx) {
             int2 n = t + int2(dx, dy);
             if (n.x >= 0 && n.y >= 0 && n.x < params.tilesX && n.y < params.tilesY)
-                listed = (TILE_STATE_LOAD(n) & kFilterTilePhotons) != 0u;
+                listed = (CAUSTICS_IMAGE_LOAD_UINT(tileState, n) & kFilterTilePhotons) != 0u;
         }
     uint slot = kFilterNoSlot;
     if (listed) {

@@ -14,6 +14,7 @@
 #include "forward_trace/shaders/forward.h"
 #include "gbuffer/shaders/gbuffer.h"
 #include "gbuffer/shaders/remap_object_ids.h"
+#include "backward_trace/shaders/second_type_guide_fill.h"
 #include "backward_trace/shaders/second_type_guides.h"
 
 namespace caustics::shader {
@@ -314,6 +315,47 @@ TEST(SecondTypeGuideBody, ThroughAMovedGlassTheMotionIsTheGlasssAndTheDepthTheCa
     EXPECT_NEAR(m.previousDepth, 2.0f, 1e-5f);   // the receiver moved along the image plane
     EXPECT_EQ(m.linearDepth, g.linearDepth);
     EXPECT_EQ(m.objectId, g.objectId);
+}
+
+// The glass's own guide motion (docs/caustics.md "Second-type guides", incoherent receivers): zero for a
+// still glass under a still camera, the glass point's screen motion when it moved, and no history when
+// last frame's camera had it behind.
+TEST(SecondTypeGuideBody, GlassGuideMotionIsTheGlassPointsOwn) {
+    const glm::mat4 still = viewProjAt(0.0f);
+    const CameraConstants c = guideCamera(still, still);
+    const float3 glassNow(0.06f, 0.0f, 1.2f);
+    const float3 at = glassGuideMotion(c, glassNow, glassNow, float2(64.0f, 64.0f));
+    EXPECT_NEAR(at.x, 0.0f, 1e-5f);
+    EXPECT_NEAR(at.y, 0.0f, 1e-5f);
+    EXPECT_NEAR(at.z, 0.8f, 1e-5f);   // last frame's clip w: 0.8 m in front of the camera at z = 2
+    const float3 before = glassNow + float3(-0.05f, 0.0f, 0.0f);
+    const float3 moved = glassGuideMotion(c, glassNow, before, float2(64.0f, 64.0f));
+    const SecondTypeGuide viaReceiver =
+        secondTypeGuideThroughMovedGlass(c, SecondTypeGuide{}, glassNow, before, float3(0.0f, 0.0f, 0.0f), float2(64.0f, 64.0f));
+    EXPECT_EQ(moved.x, viaReceiver.motion.x);
+    EXPECT_EQ(moved.y, viaReceiver.motion.y);
+    EXPECT_LT(moved.x, -1.0f);   // it sat left of where it is
+    const glm::mat4 turned = glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f) *
+                             glm::lookAt(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    const float3 lost = glassGuideMotion(guideCamera(still, turned), glassNow, glassNow, float2(64.0f, 64.0f));
+    EXPECT_EQ(lost.x, kGuideNoHistory);
+    EXPECT_EQ(lost.z, 0.0f);
+}
+
+// Two pixels' guides agree where the a-trous passes' first step would weigh them: the same receiver,
+// depths within 3 %, normals within about 8 degrees (second_type_guide_fill.h).
+TEST(SecondTypeGuideFillBody, GuidesAgreeOnOneReceiverNearbyInDepthAndNormal) {
+    const float3 up(0.0f, 1.0f, 0.0f);
+    EXPECT_TRUE(guidesAgree(2.0f, up, 3u, 2.05f, up, 3u));
+    EXPECT_FALSE(guidesAgree(2.0f, up, 3u, 2.0f, up, 4u)) << "another receiver";
+    EXPECT_FALSE(guidesAgree(2.0f, up, 3u, 2.1f, up, 3u)) << "5 % apart in depth";
+    EXPECT_TRUE(guidesAgree(2.1f, up, 3u, 2.0f, up, 3u) == guidesAgree(2.0f, up, 3u, 2.1f, up, 3u)) << "symmetric";
+    const float tilt = 0.2f;   // 11.5 degrees
+    EXPECT_FALSE(guidesAgree(2.0f, up, 3u, 2.0f, float3(std::sin(tilt), std::cos(tilt), 0.0f), 3u));
+    const float slight = 0.1f;   // 5.7 degrees
+    EXPECT_TRUE(guidesAgree(2.0f, up, 3u, 2.0f, float3(std::sin(slight), std::cos(slight), 0.0f), 3u));
+    EXPECT_LT(kGuideMinAgreeing, 9u);   // a pixel with a coherent neighbourhood keeps its receiver
+    EXPECT_EQ(kGuideGlassFlag, 1u << 31) << "the mark is the top bit, far above every instance id + 1";
 }
 
 }  // namespace
