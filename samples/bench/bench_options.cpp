@@ -139,7 +139,7 @@ std::string benchUsage() {
         "  --map-size N                caustic map side, 1 .. 8192 (default 512)\n"
         "  --filter on|off             caustic filter (default off, as the paper measured)\n"
         "  --filter-second-type apart|merged  second type filtered on its own guides or with the first\n"
-        "                              (default merged, CausticsSettings::filterSecondTypeApart)\n"
+        "                              (default apart, CausticsSettings::filterSecondTypeApart)\n"
         "  --second-type-lobes split|sampled  camera paths through glass split off their likely lobe\n"
         "                              (default split) or pick one lobe per event (the paper)\n"
         "  --sphere-radius-scale X     second-type gather radius in pixel footprint widths (0, 64] (default 0.75)\n"

@@ -97,8 +97,8 @@ const char* cliUsage() {
            "  --no-filter             switch the caustic filter off (the paper measured with it off)\n"
            "  --no-second-type        skip caustics seen through glass (the backward sphere pass)\n"
            "  --filter-second-type apart|merged  filter the caustics seen through glass on the surface they lie\n"
-           "                          on (apart: own guides and history, docs/caustics.md \"Second-type guides\")\n"
-           "                          or with the first type on the camera G-buffer (merged, the default)\n"
+           "                          on (apart, the default: own guides and history, docs/caustics.md\n"
+           "                          \"Second-type guides\") or with the first type on the camera G-buffer (merged)\n"
            "  --map-occluders         caustic maps also draw occluders (default: specular objects only)\n"
            "  --exposure X            linear exposure before tone mapping (default 1)\n"
            ) + sampleControlsUsage() + animationUsage() + std::string(

@@ -46,7 +46,8 @@ CAUSTICS_CONST uint kGuideGlassFlag = 0x80000000u;
 CAUSTICS_CONST uint kGuideMinAgreeing = 2u;
 // Guides agree where the a-trous passes' first step would weigh the pair (atrous.h atrousPairWeight, the
 // second type's depth jitter): the same receiver, depths within 3 % (its 2.2 % at step 1 plus the pixel of
-// slope the jitter adds) and normals within 8 degrees (128th power of the cosine above 0.1).
+// slope the jitter adds) and normals within 8 degrees (the a-trous normal term, the cosine's 128th power,
+// above 0.27).
 CAUSTICS_CONST float kGuideAgreeDepth = 0.03f;
 CAUSTICS_CONST float kGuideAgreeCosine = 0.99f;
 CAUSTICS_FN bool guidesAgree(float depthA, float3 normalA, uint idA, float depthB, float3 normalB, uint idB) {

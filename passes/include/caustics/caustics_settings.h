@@ -76,9 +76,10 @@ struct CausticsSettings {
     // G-buffer, which at those pixels holds the glass. Without an AOV that shows a type alone its buffer,
     // image and guides follow the specular pixels the camera sees (list order, "Second-type memory"):
     // the filter's share is 27.5 MiB at 1080p and 109 MiB at 4K (16.5 / 65.5 merged; MemoryBudget.*).
-    // Off by default: through the built-in water glass (eight interfaces) it leaves speckles that the
-    // merged filter smooths ("Second-type memory", the README's view).
-    bool filterSecondTypeApart = false;
+    // On by default since 2026-12-04, when a traced pixel whose receiver the filter cannot follow (or that
+    // has none) took the glass's guides instead ("Second-type guides"): before, the built-in water glass
+    // kept speckles apart that the merged filter smoothed.
+    bool filterSecondTypeApart = true;
     // History length cap, frames: with a still view the temporal step is the plain mean of the last
     // frames until this many, then an exponential average with weight 1 / filterMaxHistory.
     uint32_t filterMaxHistory = 32;

@@ -44,12 +44,12 @@ TEST(SampleControls, ParsesEveryControl) {
     EXPECT_FLOAT_EQ(r->controls.sphereRadiusScale, 3.5f);
 }
 
-// The second type is filtered with the camera G-buffer unless asked apart (CausticsSettings' default).
-TEST(SampleControls, SecondTypeFilteredApartOnlyWhenAsked) {
+// The second type is filtered apart, on its own guides, unless asked merged (CausticsSettings' default).
+TEST(SampleControls, SecondTypeFilteredApartUnlessAskedMerged) {
     auto plain = parse({});
     ASSERT_TRUE(plain.ok());
     EXPECT_EQ(plain->filterSecondTypeApart, CausticsSettings{}.filterSecondTypeApart);
-    EXPECT_FALSE(plain->filterSecondTypeApart);
+    EXPECT_TRUE(plain->filterSecondTypeApart);
     auto merged = parse({"--filter-second-type", "merged"});
     ASSERT_TRUE(merged.ok()) << merged.message();
     EXPECT_FALSE(merged->filterSecondTypeApart);
