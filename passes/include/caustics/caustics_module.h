@@ -85,8 +85,10 @@ struct FrameOutputs {
     rg::RgTexture direct;      // RGBA16_FLOAT direct radiance
     rg::RgTexture caustics;    // RGBA32_FLOAT caustic radiance (cd/m^2), filtered when settings.filter;
                                // invalid when caustics are off or the scene has no light
-    // Unfiltered caustic components, exported for the FirstType / SecondType AOVs (one accumulation
-    // buffer otherwise, docs/caustics.md "Memory"); invalid for other AOVs or when off.
+    // The caustic components, exported for the FirstType / SecondType AOVs (one accumulation buffer
+    // otherwise, docs/caustics.md "Memory"); invalid for other AOVs or when off. Filtered when
+    // settings.filter and settings.filterSecondTypeApart (the default: each type on its own guides,
+    // docs/caustics.md "Second-type guides"), unfiltered otherwise.
     rg::RgTexture firstType, secondType;
     GBuffer gbuffer;
     rg::RgBuffer causticStats; // uint32[kStatCount] (caustic_passes.h); causticStatsWarnings() reads it
