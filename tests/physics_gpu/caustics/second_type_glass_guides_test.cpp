@@ -58,24 +58,47 @@ struct GlassCounts {
     uint32_t mismatched = 0;   // the GPU's guide id differs from the rule's (receiver or glass)
     uint32_t glassGuides = 0;  // every pixel whose GPU guide is the glass's
     uint32_t glassDepthOff = 0;   // of those, a depth other than the camera G-buffer's (beyond one half step)
+    uint32_t glassMotionOff = 0;  // or a motion other than the glass point's between the two cameras
+    double worstGlassMotion = 0.0;   // px
     uint32_t unguidedOnGlass = 0;   // pixels the camera sees on the glass with no guide at all
 };
 
-// Runs one frame (screen layout, the second type filtered apart) and evaluates the rule over every pixel
-// that has its own sphere-written guide.
-GlassCounts measure(rhi::IDevice& device, const IndependentCase& c, const std::vector<uint32_t>& glassIds) {
+// Texel-centre position of world point x through viewProj (the filter's convention: pixel (i, j) at (i, j)).
+glm::dvec2 texelOf(const glm::mat4& viewProj, const glm::dvec3& x) {
+    const glm::dvec4 clip = glm::dmat4(viewProj) * glm::dvec4(x, 1.0);
+    return (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * double(kView) - 0.5;
+}
+
+// The world point on pixel (x, y)'s centre ray whose clip w is `depth` (the camera G-buffer's linear depth).
+glm::dvec3 pointAtDepth(const glm::mat4& viewProj, uint32_t x, uint32_t y, double depth) {
+    const glm::dmat4 m(viewProj), inv = glm::inverse(m);
+    const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / double(kView) * 2.0 - 1.0;
+    glm::dvec4 a = inv * glm::dvec4(ndc, 0.0, 1.0), b = inv * glm::dvec4(ndc, 1.0, 1.0);
+    const glm::dvec3 pa = glm::dvec3(a) / a.w, pb = glm::dvec3(b) / b.w;
+    const double wa = (m * glm::dvec4(pa, 1.0)).w, wb = (m * glm::dvec4(pb, 1.0)).w;
+    return pa + (pb - pa) * ((depth - wa) / (wb - wa));
+}
+
+// Runs two frames, the camera moved by `step` between them (screen layout, the second type filtered
+// apart), and evaluates the rule over every pixel of the last that has its own sphere-written guide.
+GlassCounts measure(rhi::IDevice& device, const IndependentCase& c, const std::vector<uint32_t>& glassIds, glm::vec3 step) {
     CausticsSettings s = secondTypeSettings(256, 1.0f);
     s.filter = true;
     s.filterSecondTypeApart = true;
     s.seed = seedOffset() + 1;
-    auto run = runCaustics(device, c.module, c.camera, kView, kView, s);
+    scene::Camera first = c.camera;
+    first.eye -= step;
+    first.target -= step;
+    const scene::Camera cameras[] = {first, c.camera};
+    auto run = runCaustics(device, c.module, cameras, kView, kView, s);
     EXPECT_TRUE(run) << run.message();
     GlassCounts n;
     if (!run) return n;
     const CausticRun& g = run.value();
-    auto camera = makeCameraConstants(c.camera, kView, kView, 0);
-    EXPECT_TRUE(camera);
-    if (!camera) return n;
+    auto before = makeCameraConstants(first, kView, kView, 0);
+    auto camera = makeCameraConstants(c.camera, kView, kView, 1, &before.value().viewProj);
+    EXPECT_TRUE(before && camera);
+    if (!before || !camera) return n;
     const std::vector<SphereGuide> own = sphereGuides(g, camera.value().viewProj);
     auto isGlass = [&](uint32_t id) { return std::find(glassIds.begin(), glassIds.end(), id) != glassIds.end(); };
     for (uint32_t y = 0; y < kView; ++y)
@@ -87,6 +110,13 @@ GlassCounts measure(rhi::IDevice& device, const IndependentCase& c, const std::v
                 ++n.glassGuides;
                 const float d = g.guideDepthMotion[i].x, expected = g.linearDepth[i];
                 if (std::abs(d - expected) > expected / 1024.0f) ++n.glassDepthOff;
+                // The glass point's motion, float32 on the GPU and stored in half precision: within 1e-3 px
+                // plus a half step of its size.
+                const glm::dvec3 point = pointAtDepth(camera.value().viewProj, x, y, expected);
+                const glm::dvec2 motion = texelOf(before.value().viewProj, point) - texelOf(camera.value().viewProj, point);
+                const double off = std::max(std::abs(motion.x - g.guideDepthMotion[i].y), std::abs(motion.y - g.guideDepthMotion[i].z));
+                n.worstGlassMotion = std::max(n.worstGlassMotion, off);
+                if (off > 1e-3 + std::max(std::abs(motion.x), std::abs(motion.y)) / 1024.0) ++n.glassMotionOff;
             }
             if (!own[i].written || cameraId == 0) continue;
             ++n.traced;
@@ -105,26 +135,31 @@ GlassCounts measure(rhi::IDevice& device, const IndependentCase& c, const std::v
             if (guideId != (glass ? cameraId : own[i].id)) ++n.mismatched;
         }
     std::printf("[ measured ] %s: %u traced pixels, %u on the glass by the rule, %u where the GPU differs; %u pixels with the "
-                "glass's guides (%u with another depth), %u glass pixels without a guide\n",
-                c.name.c_str(), n.traced, n.onGlass, n.mismatched, n.glassGuides, n.glassDepthOff, n.unguidedOnGlass);
+                "glass's guides (%u with another depth, %u with another motion, worst %.2e px), %u glass pixels without a guide\n",
+                c.name.c_str(), n.traced, n.onGlass, n.mismatched, n.glassGuides, n.glassDepthOff, n.glassMotionOff,
+                n.worstGlassMotion, n.unguidedOnGlass);
     return n;
 }
 
 // Through the water glass (tube id 2, water id 3: the floor is the scene's first instance) the rule sends
 // some traced pixels to the glass and the GPU follows it but for the half-precision rounding at the
 // rule's bounds (the GPU's store may truncate where this rounds), and every pixel that sees the glass
-// keeps a guide. Measured (lavapipe, 2026-12-04, seed offsets 0..3): 3,801-3,825 traced pixels, 70-84 of
-// them on the glass by the rule, 0-2 where the GPU differs (bound: 0.5 %, 19 pixels); 1,170-1,196 pixels
-// with the glass's guides (the rest had no sphere here or beside it), none without a guide. Before
-// 2026-12-04, 972 glass pixels (offset 0) kept id 0: no history from frame to frame, the speckles the
-// README's view showed with the second type filtered apart.
+// keeps a guide; a glass-guided pixel holds the camera G-buffer's depth and the glass point's motion under
+// a camera that slid 2 cm (about 3 px). Measured (lavapipe, 2026-12-04, seed offsets 0..3): 3,802-3,823
+// traced pixels, 57-70 of them on the glass by the rule, 0-1 where the GPU differs (bound: 0.5 %, 19
+// pixels); 1,148-1,195 pixels with the glass's guides (the rest had no sphere here or beside it), none
+// without a guide; their motion within 3.2e-3 px of the glass point's (bound 1e-3 px plus a half step of
+// the motion: 2.9e-3 px at 3 px). Before 2026-12-04, 972 glass pixels (offset 0, still camera) kept id 0:
+// no history from frame to frame, the speckles the README's view showed with the second type filtered apart.
 TEST_F(SecondTypeGlassGuides, IncoherentReceiversThroughTheWaterGlassTakeTheGlass) {
-    const GlassCounts n = measure(*device, waterGlass(), {2u, 3u});
+    // The camera slid 2 cm between the two frames: the glass's guides carry the glass point's motion.
+    const GlassCounts n = measure(*device, waterGlass(), {2u, 3u}, glm::vec3(0.0f, 0.0f, 0.02f));
     EXPECT_GT(n.traced, 500u);
     EXPECT_GT(n.onGlass, 0u);
     EXPECT_LE(n.mismatched, std::max(2u, n.traced / 200u));
     EXPECT_GE(n.glassGuides, n.onGlass - n.mismatched);
     EXPECT_EQ(n.glassDepthOff, 0u);
+    EXPECT_EQ(n.glassMotionOff, 0u);
     EXPECT_EQ(n.unguidedOnGlass, 0u);
 }
 
@@ -135,7 +170,7 @@ TEST_F(SecondTypeGlassGuides, CoherentReceiverThroughAPaneKeepsItsGuides) {
     c.camera = lookAt({1.6f, 1.2f, 0.0f}, {0.48f, 0.0f, 0.0f}, 25.0f);
     addPaneInFrontOfCamera(c, 0.15f, 0.15f);
     setDirectional(c, {0.6f, -1.0f, 0.0f}, 1.0f);
-    const GlassCounts n = measure(*device, c, {2u});
+    const GlassCounts n = measure(*device, c, {2u}, glm::vec3(0.0f));
     EXPECT_GT(n.traced, kView * kView * 8 / 10);
     EXPECT_EQ(n.onGlass, 0u);
     EXPECT_EQ(n.glassGuides, 0u);
