@@ -84,17 +84,24 @@ void secondTypeGuideFillTexels(uint2 id, out int2 p, out int2 t) {
     }
 }
 
+// The receiver id of p's k-th neighbour q (guideFillNeighbour) where the sphere pass wrote its guide, 0
+// where it did not or q lies outside the view or the list; tq its guide texel.
+uint secondTypeNeighbourSphere(int2 p, uint k, out int2 q, out int2 tq) {
+    q = p + guideFillNeighbour(k);
+    tq = int2(-1, -1);
+    if (q.x < 0 || q.y < 0 || q.x >= int(params.size.x) || q.y >= int(params.size.y)) return 0u;
+    tq = SPECULAR_INPUT_TEXEL(q, params.listOrder);
+    return tq.x < 0 ? 0u : CAUSTICS_TEXEL_UINT(sphereObjectId, tq);
+}
+
 // How many of p's 8 neighbours have a sphere-written guide that agrees with (depth, n, id).
 uint secondTypeGuideAgreeing(int2 p, float depth, float3 n, uint id) {
     uint agreeing = 0u;
     for (uint k = 0u; k < 8u; ++k) {
-        int2 q = p + guideFillNeighbour(k);
-        if (q.x < 0 || q.y < 0 || q.x >= int(params.size.x) || q.y >= int(params.size.y)) continue;
-        int2 tq = SPECULAR_INPUT_TEXEL(q, params.listOrder);
-        if (tq.x < 0) continue;
-        uint source = CAUSTICS_TEXEL_UINT(sphereObjectId, tq);
-        if (source == 0u) continue;
-        if (guidesAgree(depth, n, id, CAUSTICS_IMAGE_LOAD(depthMotion, tq).x, CAUSTICS_IMAGE_LOAD(normal, tq).xyz, source))
+        int2 q, tq;
+        uint source = secondTypeNeighbourSphere(p, k, q, tq);
+        if (source != 0u &&
+            guidesAgree(depth, n, id, CAUSTICS_IMAGE_LOAD(depthMotion, tq).x, CAUSTICS_IMAGE_LOAD(normal, tq).xyz, source))
             ++agreeing;
     }
     return agreeing;
@@ -136,11 +143,8 @@ void secondTypeGuideFillThread(uint2 id) {
         normalHere = CAUSTICS_IMAGE_LOAD(normal, t);
     } else {
         for (uint k = 0u; k < 8u && surface != 0u; ++k) {
-            int2 q = p + guideFillNeighbour(k);
-            if (q.x < 0 || q.y < 0 || q.x >= int(params.size.x) || q.y >= int(params.size.y)) continue;
-            int2 tq = SPECULAR_INPUT_TEXEL(q, params.listOrder);
-            if (tq.x < 0) continue;
-            uint source = CAUSTICS_TEXEL_UINT(sphereObjectId, tq);
+            int2 q, tq;
+            uint source = secondTypeNeighbourSphere(p, k, q, tq);
             if (source == 0u || CAUSTICS_TEXEL_UINT(cameraObjectId, q) != surface) continue;
             depthMotionHere = CAUSTICS_IMAGE_LOAD(depthMotion, tq);
             // A filled pixel's photon weight (.w) is stored negated: its sample is not the neighbour's, so the
