@@ -185,6 +185,14 @@ void addAtrousIteration(rg::RenderGraph& graph, CausticFrame& f, uint32_t i, Fil
     });
 }
 
+// Where the temporal pass confirms a rise before it drops a history (shaders/temporal.h, temporalVerdict):
+// where the run holds the second type, whose photons each lie in several pixels' gather disks.
+uint32_t temporalConfirmRises(const CausticFrame& f, bool secondTypeRun) {
+    if (secondTypeRun) return shader::kTemporalConfirmEvery;
+    const bool merged = !f.separateTypes && f.specularIndex.valid();   // the second type ran, into the same radiance
+    return merged && f.in->gbuffer.optics.valid() ? shader::kTemporalConfirmSpecular : shader::kTemporalConfirmNone;
+}
+
 // caustics.temporal: last frame's history reprojected into this frame's (ping-pong, no copy).
 // motionGuides: f's G-buffer is the second type's guides (docs/caustics.md "Second-type guides").
 void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hist, FilterFrame& ff, rg::RgTexture raw,
@@ -194,9 +202,13 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
     graph.addPass(filterPassName(f, "caustics.temporal"), [&](rg::PassBuilder& b) {
         b.setStages(rhi::PipelineStages::Compute);
         f.camera = b.read(f.camera, rg::Access::ConstantBuffer);
+        const uint32_t confirmRises = temporalConfirmRises(f, motionGuides);
+        // The camera G-buffer's optics only where the pass tells the glass's pixels by it: another read
+        // would keep the G-buffer's optics alive up to here (the frame's peak, docs/caustics.md "Memory").
         const rg::RgTexture in[] = {b.read(raw), b.read(g.linearDepth), b.read(g.normalRoughness), b.read(g.objectId),
                                     b.read(hist.previousColor), b.read(hist.previousGuides), b.read(hist.previousSlots),
-                                    b.read(ff.layout.index)};
+                                    b.read(ff.layout.index),
+                                    confirmRises == shader::kTemporalConfirmSpecular ? b.read(g.optics) : g.normalRoughness};
         readTiles(b, ff.tiles, false);
         hist.color = b.write(hist.color);
         hist.guides = b.write(hist.guides);
@@ -209,7 +221,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
         const float pre = ff.preExposure;
         const shader::TemporalParams built{historyUsable ? 1u : 0u, float(f.in->settings.filterMaxHistory), pre, 1.0f,
                                              motionGuides ? 1u : 0u, f.casterMotion && !motionGuides ? 1u : 0u,
-                                             f.objectMotion && !motionGuides ? 1u : 0u, f.plan.instanceCount};
+                                             f.objectMotion && !motionGuides ? 1u : 0u, f.plan.instanceCount,
+                                             confirmRises};
         const bool listOrder = ff.layout.listOrder;
         f.casterMotionWords = b.read(f.casterMotionWords, rg::Access::SampledRead);
         f.instanceMotionRows = b.read(f.instanceMotionRows, rg::Access::SampledRead);
@@ -237,7 +250,8 @@ void addTemporalPass(rg::RenderGraph& graph, CausticFrame& f, HistoryHandles& hi
                                                        .texture("outFilterGuide", ctx.texture(guide))
                                                        .buffer("casterMotion", ctx.buffer(casterMotion))
                                                        .buffer("instanceMotion", ctx.buffer(instanceRows))
-                                                       .texture("specularIndex", ctx.texture(in[7])),
+                                                       .texture("specularIndex", ctx.texture(in[7]))
+                                                       .texture("gOptics", ctx.texture(in[8])),
                                                    push, t.args);
             if (recorded) {
                 // Committed when recorded, not when the graph was built: this frame's copy is the next

@@ -20,6 +20,7 @@ inline constexpr Binding kCausticTemporalBindingList[] = {
     {"casterMotion", Kind::StorageBufferRO, 0, 12, "uint"},      // caustics.forward's sums (common/caster_motion.h)
     {"instanceMotion", Kind::StorageBufferRO, 0, 13, "float4"},  // 3 rows per instance (common/caster_motion.h)
     {"specularIndex", Kind::SampledTexture, 0, 14, "uint4"},   // list order: each pixel's entry (common/specular_list.h)
+    {"gOptics", Kind::SampledTexture, 0, 15, "float4"},        // merged: which pixels are specular (TemporalParams::confirmRises)
 };
 
 inline constexpr PassBindings kCausticTemporalBindings{"caustic_temporal", "passes/caustic_filter/temporal_bindings.h",

@@ -4,8 +4,11 @@
 // "Memory"): the persistent resources it sized (memoryReport) plus its transients' aliased peak
 // (appendFrameMemory), the host's scene apart. Shares are differences between runs: the filter's
 // (filter on - off), the caustic passes' without the filter (filter off - caustics off: what they add
-// to the module's own G-buffer, direct lighting and composite, the "frame" column). With --out, every
-// entry goes to memory.csv (size, run, resource, bytes, kind).
+// to the module's own G-buffer, direct lighting and composite, the "frame" column). The filter's history
+// pool starts at a quarter of the view's tiles and grows with the caustics' coverage once frames run
+// (docs/caustics.md "Memory"), so "full share" is the filter's share with the pool at the whole view: what
+// a view whose caustics cover the screen (the built-in table scene after a few frames) holds. With --out,
+// every entry goes to memory.csv (size, run, resource, bytes, kind).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -74,18 +77,20 @@ int runMemoryMode(const BenchOptions& o) {
                 "not executed\n",
                 device.value()->capabilities().adapterName.c_str(), device.value()->capabilities().driverName.c_str(),
                 sc->name.c_str(), sc->isStandIn ? " [generated stand-in]" : "", settings.mapResolution);
-    std::printf("%-10s %12s %12s %12s %12s %12s %12s %12s %12s\n", "size", "persistent", "peak trans.", "module",
-                "filter off", "filter share", "caustics", "frame", "host scene");
+    std::printf("%-10s %12s %12s %12s %12s %12s %12s %12s %12s %12s\n", "size", "persistent", "peak trans.", "module",
+                "filter off", "filter share", "full share", "caustics", "frame", "host scene");
     constexpr uint32_t kSizes[4][2] = {{1280, 720}, {1920, 1080}, {2560, 1440}, {3840, 2160}};
     std::vector<std::vector<MemoryEntry>> detail;
     for (const auto& size : kSizes) {
-        // Runs: 2 filter on, 1 filter off, 0 caustics off.
-        const char* kRunNames[3] = {"caustics_off", "filter_off", "filter_on"};
-        uint64_t module[3] = {0, 0, 0}, persistent = 0, peak = 0, host = 0;
-        for (int run = 2; run >= 0; --run) {
+        // Runs: 3 filter on with the pool at the whole view, 2 filter on, 1 filter off, 0 caustics off.
+        const char* kRunNames[4] = {"caustics_off", "filter_off", "filter_on", "filter_on_full_pool"};
+        uint64_t module[4] = {0, 0, 0, 0}, persistent = 0, peak = 0, host = 0;
+        const uint32_t startPool = settings.filterPoolTiles;
+        for (int run = 3; run >= 0; --run) {
             const int filter = run == 2;
-            settings.filter = filter != 0;
+            settings.filter = run >= 2;
             settings.causticsEnabled = run > 0;
+            settings.filterPoolTiles = run == 3 ? CausticsSettings::kMaxFilterPoolTiles : startPool;   // clamped to the view's tiles
             // A fresh module per run: the sphere allocation and history start from this size.
             auto session = BenchSession::create(device.value(), sc.value(), settings);
             if (!session) return fail(session.message());
@@ -105,9 +110,9 @@ int runMemoryMode(const BenchOptions& o) {
                 if (csv) csv << size[0] << ',' << size[1] << ',' << kRunNames[run] << ',' << e.name << ',' << e.bytes << ','
                              << memoryKindName(e.kind) << '\n';
         }
-        std::printf("%4ux%-5u %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB\n", size[0],
-                    size[1], mib(persistent), mib(peak), mib(module[2]), mib(module[1]), mib(module[2] - module[1]),
-                    mib(module[1] - module[0]), mib(module[0]), mib(host));
+        std::printf("%4ux%-5u %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB %8.1f MiB\n",
+                    size[0], size[1], mib(persistent), mib(peak), mib(module[2]), mib(module[1]), mib(module[2] - module[1]),
+                    mib(module[3] - module[1]), mib(module[1] - module[0]), mib(module[0]), mib(host));
     }
     // --width/--height pick the size whose entries are listed (default 1920x1080).
     for (size_t i = 0; i < detail.size(); ++i) {

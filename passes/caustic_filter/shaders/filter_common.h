@@ -64,6 +64,10 @@ float filterBitsToFloat(uint u) { return uintBitsToFloat(u); }
 uint filterFloatToBits(float v) { return floatBitsToUint(v); }
 #endif
 
+// The history length n from a history guide's first word (filterPackGuide, temporal_thread.h): the high
+// half, negative while a rise is pending (temporal.h, temporalVerdict).
+float filterGuideLength(uint x) { return abs(filterUnpackHalf2(x).y); }
+
 // The frame inputs' layout, fixed per pipeline (common/specular_list.h): the *_list entries define
 // FILTER_LIST_ORDER for the second type's run in list order, so the merged default's code has no
 // list-order branch (docs/caustics.md "Second-type memory").

@@ -24,8 +24,7 @@ void filterOutputThread(uint group, uint2 local) {
     int2 p = filterTileOf(tilesLoad(group)) * kFilterTileSize + int2(local);
     if (!filterInside(p, params.width, params.height)) return;
     int2 own = filterPoolTexel(group, p);
-    // n: the high half of the history guide's first word (filterPackGuide).
-    if (filterUnpackHalf2(CAUSTICS_TEXEL(temporalGuides, own).x).y <= 1.0f) return;
+    if (filterGuideLength(CAUSTICS_TEXEL(temporalGuides, own).x) <= 1.0f) return;
     int2 target = SPECULAR_INPUT_TEXEL(p, FILTER_LIST_ORDER_ON);
     if (target.x < 0) return;
     CAUSTICS_IMAGE_STORE(radiance, target, float4(CAUSTICS_TEXEL(temporalColor, own).rgb * params.invPreExposure, 1.0f));

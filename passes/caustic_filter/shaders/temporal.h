@@ -16,7 +16,7 @@
 #include "filter_common.h"
 
 CAUSTICS_SHARED_BEGIN
-// Push constants (temporal_bindings.h), 24 bytes.
+// Push constants (temporal_bindings.h), 36 bytes.
 struct TemporalParams {
     uint historyValid;
     float maxHistory;     // CausticsSettings::filterMaxHistory
@@ -31,7 +31,13 @@ struct TemporalParams {
     // instance takes its history from where that point was (docs/caustics.md "Moving objects").
     uint objectMotion;
     uint instanceCount;   // instances the rows cover
+    // kTemporalConfirm*: where a rise drops the history only when the frame before rose too
+    // (temporalVerdict): the pixels that hold the second type (docs/caustics.md "Moving caustics").
+    uint confirmRises;
 };
+CAUSTICS_CONST uint kTemporalConfirmNone = 0u;       // the first type alone
+CAUSTICS_CONST uint kTemporalConfirmEvery = 1u;      // the second type's own run
+CAUSTICS_CONST uint kTemporalConfirmSpecular = 2u;   // both types merged: the specular pixels (specularIndex)
 CAUSTICS_CONST float kTemporalRejectDeviations = 3.0f;
 CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;
 
@@ -87,10 +93,30 @@ CAUSTICS_FN TemporalTaps temporalTapAdd(TemporalTaps t, float l, float hl, float
     }
     return t;
 }
+CAUSTICS_FN bool temporalTapsFirefly(TemporalTaps t) { return t.top > t.topH && t.top >= kTemporalFireflyRatio * t.second; }
 CAUSTICS_FN bool temporalTapsContradict(TemporalTaps t) {
-    bool firefly = t.top > t.topH && t.top >= kTemporalFireflyRatio * t.second;
-    return firefly ? temporalContradicts(t.c - t.top, t.h - t.topH, t.v, t.quantum)
-                   : temporalContradicts(t.c, t.h, t.v, t.quantum);
+    return temporalTapsFirefly(t) ? temporalContradicts(t.c - t.top, t.h - t.topH, t.v, t.quantum)
+                                  : temporalContradicts(t.c, t.h, t.v, t.quantum);
+}
+// Whether the tested sums rose above the history (the firefly left out as temporalTapsContradict does).
+CAUSTICS_FN bool temporalTapsRose(TemporalTaps t) {
+    return temporalTapsFirefly(t) ? t.c - t.top > t.h - t.topH : t.c > t.h;
+}
+
+// What the temporal pass does with a history (docs/caustics.md "Moving caustics"). With confirmRises a
+// rise drops it only when the history's own frame had risen too (risePending, kept in the history
+// guide): a caustic that moved in is still there a frame later, one rare sample is not. The second
+// type needs it: a photon lies in the gather disks of several neighbouring pixels (more than one tap of
+// the 3x3), so one photon, or one rare path's bright one, read as a caustic that moved in, restarted
+// the history at full strength and biased a still view bright (2-4x through the built-in ball after 32
+// frames). A fall is never a rare sample: it drops the history at once.
+CAUSTICS_CONST uint kTemporalKeep = 0u;
+CAUSTICS_CONST uint kTemporalDrop = 1u;
+CAUSTICS_CONST uint kTemporalKeepRisePending = 2u;
+CAUSTICS_FN uint temporalVerdict(TemporalTaps t, bool confirmRises, bool risePending) {
+    if (!temporalTapsContradict(t)) return kTemporalKeep;
+    if (!confirmRises || risePending || !temporalTapsRose(t)) return kTemporalDrop;
+    return kTemporalKeepRisePending;
 }
 CAUSTICS_SHARED_END
 

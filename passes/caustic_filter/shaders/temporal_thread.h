@@ -17,16 +17,20 @@
 #endif
 
 // The history guides, one RG32UI texel (docs/caustics.md "History and guides"): x the linear depth and
-// the history length n (2 x half: 11 significant bits, exact integers up to 2048 > kMaxFilterHistory),
-// y the octahedral normal (2 x unorm8) and the object id's low 16 bits. Only the next frame's
-// disocclusion test reads them (1 % depth tolerance, a normal cosine of 0.9, id equality).
+// the history length n (2 x half: 11 significant bits, exact integers up to 2048 > kMaxFilterHistory;
+// negative while a rise is pending, temporalVerdict), y the octahedral normal (2 x unorm8) and the
+// object id's low 16 bits. Only the next frame's disocclusion test reads them (1 % depth tolerance, a
+// normal cosine of 0.9, id equality) and this frame's variance and output passes the length
+// (filterGuideLength).
 struct FilterGuide {
     float depth;
     float historyLength;
+    bool risePending;
     float3 normal;
     uint id;   // low 16 bits
 };
-uint2 filterPackGuide(float depth, float historyLength, float3 n, uint id) {
+uint2 filterPackGuide(float depth, float historyLength, bool risePending, float3 n, uint id) {
+    historyLength = risePending ? -historyLength : historyLength;
     float l1 = abs(n.x) + abs(n.y) + abs(n.z);
     n = l1 > 0.0f ? n / l1 : float3(0.0f, 0.0f, 1.0f);
     float2 e = n.z >= 0.0f ? n.xy
@@ -44,7 +48,8 @@ FilterGuide filterUnpackGuide(uint2 g) {
     n.xy += float2(n.x >= 0.0f ? -t : t, n.y >= 0.0f ? -t : t);
     FilterGuide r;
     r.depth = dn.x;
-    r.historyLength = dn.y;
+    r.historyLength = filterGuideLength(g.x);
+    r.risePending = dn.y < 0.0f;
     r.normal = normalize(n);
     r.id = filterGuideStoredId(g);
     return r;
@@ -91,8 +96,9 @@ int2 temporalHistoryTexel(int2 q) {
 // history's mean H differ by more than 3 deviations of one frame's 3x3 sum (the taps' per-frame
 // variances, temporal moments) plus 2 photons (q, the smallest non-zero luminance of this frame in the
 // 3x3): a caustic of ~1 photon per pixel per frame that leaves is caught in one frame, 3 photons where the
-// history was dark start a new one; stray photons do not; nor does one firefly (temporalTapsContradict).
-bool temporalHistoryRejected(int2 p, int2 origin, int2 nearest, int2 size, uint id) {
+// history was dark start a new one; stray photons do not; nor does one firefly (temporalTapsContradict);
+// with confirmRises a rise only when the history rose too (risePending, temporalVerdict).
+uint temporalHistoryVerdict(int2 p, int2 origin, int2 nearest, int2 size, uint id, bool confirmRises, bool risePending) {
     TemporalTaps taps = temporalTapsNone();
     TEMPORAL_UNROLL for (int dy = -1; dy <= 1; ++dy) {
         TEMPORAL_UNROLL for (int dx = -1; dx <= 1; ++dx) {
@@ -109,7 +115,7 @@ bool temporalHistoryRejected(int2 p, int2 origin, int2 nearest, int2 size, uint 
             taps = temporalTapAdd(taps, sTemporalLuminance[r], filterLuminance(history.rgb), history.a * history.a);
         }
     }
-    return temporalTapsContradict(taps);
+    return temporalVerdict(taps, confirmRises, risePending);
 }
 
 // Screen-space derivative of linear depth along `axis`: the smaller one-sided difference on the same
@@ -184,6 +190,13 @@ float3 temporalCatmullRom(int2 base, float2 f, uint id, float3 bilinear) {
     return clamp(sum, lo, hi);
 }
 
+// Whether a rise at p waits for the next frame (TemporalParams::confirmRises): every pixel of the second
+// type's run; merged, the specular pixels (the glass, where the second type lies; common/specular_list.h).
+bool temporalConfirmsRises(int2 p, uint id) {
+    if (params.confirmRises == kTemporalConfirmEvery) return true;
+    return params.confirmRises == kTemporalConfirmSpecular && gbufferTexelIsSpecular(id, CAUSTICS_TEXEL(gOptics, p));
+}
+
 void temporalThread(uint group, uint2 local) {
     int2 origin = filterTileOf(tilesLoad(group)) * kFilterTileSize;
     int2 p = origin + int2(local);
@@ -201,6 +214,7 @@ void temporalThread(uint group, uint2 local) {
     float3 color = cur;
     float moment2 = l * l;
     float historyLength = 1.0f;
+    bool risePending = false;   // this frame's: a rise kept for the next frame to confirm
     if (params.historyValid != 0u && id != 0u && depth > 0.0f) {
         float3 world = cameraWorldPosition(camera, float2(p) + 0.5f, depth);
         // The history of a caustic whose caster moved lies where the caustic was (its receiver stays).
@@ -231,6 +245,7 @@ void temporalThread(uint group, uint2 local) {
                                                                       normalize(camera.eye.xyz - world));
             float3 hColor = float3(0.0f, 0.0f, 0.0f), hMoments = float3(0.0f, 0.0f, 0.0f);
             float wSum = 0.0f;
+            bool historyRose = false;   // a blended texel's rise is pending
             TEMPORAL_UNROLL for (int i = 0; i < 4; ++i) {
                 int2 o = int2(i & 1, i >> 1);
                 int2 q = base + o;
@@ -249,12 +264,16 @@ void temporalThread(uint group, uint2 local) {
                 // their signal difference (a focal spot's edge) to the variance.
                 hMoments += w * float3(filterLuminance(history.rgb), history.a * history.a, hg.historyLength);
                 wSum += w;
+                historyRose = historyRose || (w > 0.0f && hg.risePending);
             }
             // The test needs variances from the moments: histories shorter than kTemporalTrustedHistory
             // frames are short already (their lag is at most that long).
-            bool rejected = wSum > 0.01f && hMoments.z / wSum >= kTemporalTrustedHistory &&
-                            temporalHistoryRejected(p, origin, int2(floor(prev + 0.5f)), size, id);
-            if (wSum > 0.01f && !rejected) {
+            uint verdict = wSum > 0.01f && hMoments.z / wSum >= kTemporalTrustedHistory
+                               ? temporalHistoryVerdict(p, origin, int2(floor(prev + 0.5f)), size, id,
+                                                        temporalConfirmsRises(p, id), historyRose)
+                               : kTemporalKeep;
+            if (wSum > 0.01f && verdict != kTemporalDrop) {
+                risePending = verdict == kTemporalKeepRisePending;
                 hColor /= wSum;
                 if (carried && wSum > 0.999f) hColor = temporalCatmullRom(base, f, id, hColor);
                 hMoments /= wSum;
@@ -272,7 +291,7 @@ void temporalThread(uint group, uint2 local) {
     float deviation = sqrt(max(0.0f, moment2 - lm * lm));
     float2 gradZ = float2(temporalDepthSlope(p, origin, int2(1, 0), size, depth, id), temporalDepthSlope(p, origin, int2(0, 1), size, depth, id));
     CAUSTICS_IMAGE_STORE(outColor, pool, filterNearestHalf4(float4(color, deviation)));
-    uint2 guide = filterPackGuide(depth, historyLength, n, id);
+    uint2 guide = filterPackGuide(depth, historyLength, risePending, n, id);
 #if defined(CAUSTICS_LANG_HLSL)
     outGuides[pool] = guide;
 #else

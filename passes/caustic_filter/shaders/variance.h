@@ -48,9 +48,8 @@ int2 variancePoolTexel(int2 q) {
     return slot == kFilterNoSlot ? int2(-1, -1) : filterPoolTexel(slot, q);
 }
 
-// The history length n of a pool texel: the high half of the history guide's first word
-// (filterPackGuide, temporal_thread.h).
-float varianceHistoryLength(int2 t) { return filterUnpackHalf2(CAUSTICS_TEXEL(temporalGuides, t).x).y; }
+// The history length n of a pool texel (filter_common.h).
+float varianceHistoryLength(int2 t) { return filterGuideLength(CAUSTICS_TEXEL(temporalGuides, t).x); }
 
 // This frame's object id and, where the pixel has a pool texel, its temporal result's luminance and
 // per-frame variance, over the group's region (filter_common.h), loaded once per group: the 3x3 means

@@ -1,6 +1,6 @@
 // The caustic filter's temporal history test (passes/caustic_filter/shaders/temporal.h) compiled as C++:
-// a caustic that moves drops the history, stray photons and one firefly do not (docs/caustics.md
-// "Moving caustics").
+// a caustic that moves drops the history, stray photons and one firefly do not, and the second type
+// waits a frame before a rise drops it (docs/caustics.md "Moving caustics").
 #include <gtest/gtest.h>
 
 #include "caustic_filter/shaders/temporal.h"
@@ -43,6 +43,32 @@ TEST(TemporalBody, OneFireflyKeepsTheHistoryACausticThatMovesDropsIt) {
     }
     EXPECT_TRUE(temporalTapsContradict(three));
     EXPECT_FALSE(temporalTapsContradict(lone));
+}
+
+// The second type's rule (temporalVerdict with confirmRises): one photon lies in the gather disks of
+// several neighbouring pixels, so three lit taps over a dark history may be one photon; such a rise keeps
+// the history and waits a frame, and drops it only when that frame had risen too. A fall drops it at once.
+TEST(TemporalBody, SecondTypeRiseDropsTheHistoryOnlyWhenTheFrameBeforeRoseToo) {
+    TemporalTaps dash = temporalTapsNone();   // one photon's dash over a dark history
+    for (int i = 0; i < 9; ++i) dash = temporalTapAdd(dash, i < 3 ? 1.0f : 0.0f, 0.0f, 0.0f);
+    ASSERT_TRUE(temporalTapsContradict(dash));
+    ASSERT_TRUE(temporalTapsRose(dash));
+    EXPECT_EQ(temporalVerdict(dash, false, false), kTemporalDrop) << "the first type: three photons moved in";
+    EXPECT_EQ(temporalVerdict(dash, true, false), kTemporalKeepRisePending);
+    EXPECT_EQ(temporalVerdict(dash, true, true), kTemporalDrop) << "a rise two frames running: the caustic moved in";
+    TemporalTaps left = temporalTapsNone();   // a caustic that left
+    for (int i = 0; i < 9; ++i) left = temporalTapAdd(left, 0.0f, 2.0f, 0.01f);
+    ASSERT_TRUE(temporalTapsContradict(left));
+    EXPECT_FALSE(temporalTapsRose(left));
+    EXPECT_EQ(temporalVerdict(left, true, false), kTemporalDrop);
+    const float still[9] = {0.5f, 0.6f, 0.4f, 0.5f, 0.55f, 0.45f, 0.5f, 0.5f, 0.5f};
+    EXPECT_EQ(temporalVerdict(taps(still), true, true), kTemporalKeep) << "nothing changed: the pending rise clears";
+    // The firefly is left out of the direction too: a lone bright tap over a history that fell elsewhere.
+    TemporalTaps fireflyAndFall = temporalTapsNone();
+    for (int i = 0; i < 9; ++i) fireflyAndFall = temporalTapAdd(fireflyAndFall, i == 4 ? 40.0f : 0.1f, 0.5f, kVariance);
+    ASSERT_TRUE(temporalTapsContradict(fireflyAndFall));
+    EXPECT_FALSE(temporalTapsRose(fireflyAndFall));
+    EXPECT_EQ(temporalVerdict(fireflyAndFall, true, false), kTemporalDrop);
 }
 
 }  // namespace
