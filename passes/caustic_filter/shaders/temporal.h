@@ -40,6 +40,8 @@ CAUSTICS_CONST uint kTemporalConfirmEvery = 1u;      // the second type's own ru
 CAUSTICS_CONST uint kTemporalConfirmSpecular = 2u;   // both types merged: the specular pixels (specularIndex)
 CAUSTICS_CONST float kTemporalRejectDeviations = 3.0f;
 CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;
+// A second-type guide whose motion is under this (pixels) shows a still view (temporal_thread.h).
+CAUSTICS_CONST float kTemporalStillView = 0.125f;
 
 // Relative linear-depth tolerance for a reprojected history tap up to one pixel away: 1 % plus the
 // depth change across two pixel footprints on a surface seen at the given angle (the same footprint

@@ -118,6 +118,12 @@ uint temporalHistoryVerdict(int2 p, int2 origin, int2 nearest, int2 size, uint i
     return temporalVerdict(taps, confirmRises, risePending);
 }
 
+// The disocclusion test of a history texel's guide: the same object, depth within tolerance, normals
+// within ~25 degrees.
+bool temporalGuidesAgree(FilterGuide hg, uint id, float depth, float tolerance, float3 n) {
+    return hg.id == filterGuideId(id) && abs(hg.depth - depth) <= tolerance && dot(hg.normal, n) >= 0.9f;
+}
+
 // Screen-space derivative of linear depth along `axis`: the smaller one-sided difference on the same
 // object, so a neighbour across a depth edge does not make the a-trous plane test lenient.
 float temporalDepthSlope(int2 p, int2 origin, int2 axis, int2 size, float z, uint id) {
@@ -243,6 +249,11 @@ void temporalThread(uint group, uint2 local) {
             float2 f = prev - float2(base);
             float tolerance = clip.w * temporalRelativeDepthTolerance(camera.forward.w, float(size.y), n,
                                                                       normalize(camera.eye.xyz - world));
+            // The second type seen through a still view (its guide's motion under kTemporalStillView
+            // pixels: the camera and the glass did not move): the pixel's history is the mean of its
+            // jittered camera paths, whichever receiver each reached (a glass's rim, a curved mirror),
+            // so the receiver's guides are not tested (docs/caustics.md "Second-type guides").
+            bool stillView = params.motionGuides != 0u && dot(depthGuide.yz, depthGuide.yz) < kTemporalStillView * kTemporalStillView;
             float3 hColor = float3(0.0f, 0.0f, 0.0f), hMoments = float3(0.0f, 0.0f, 0.0f);
             float wSum = 0.0f;
             bool historyRose = false;   // a blended texel's rise is pending
@@ -255,9 +266,7 @@ void temporalThread(uint group, uint2 local) {
                 // The colour with the guide, before the tests on the guide (as in temporalHistoryRejected).
                 FilterGuide hg = filterUnpackGuide(CAUSTICS_TEXEL(historyGuides, ht).xy);
                 float4 history = CAUSTICS_TEXEL(historyColor, ht) * params.historyScale;
-                if (hg.id != filterGuideId(id)) continue;
-                if (abs(hg.depth - clip.w) > tolerance) continue;
-                if (dot(hg.normal, n) < 0.9f) continue;
+                if (!stillView && !temporalGuidesAgree(hg, id, clip.w, tolerance, n)) continue;
                 float w = (o.x == 1 ? f.x : 1.0f - f.x) * (o.y == 1 ? f.y : 1.0f - f.y);
                 hColor += w * history.rgb;
                 // Per-tap variance, not the moments: mixing the moments of neighbouring texels would add
