@@ -11,9 +11,8 @@ cd "$(dirname "$0")/.."
 frames="${1:-32}"
 seeds="${2:-1 2 3}"
 build="${3:-build}"
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-view=(--scene builtin --width 512 --height 384 --camera -0.10,0.36,0.32,0.04,0,-0.05,42 --exposure 0.3 --aov caustics)
+source scripts/readme-view.sh
+view=("${readme_view[@]}" --aov caustics)
 mean() {
     oiiotool "$1" "${@:2}" --ch R --printstats 2>&1 | awk '/Stats Avg/ { print $3; exit }'
 }

@@ -10,9 +10,8 @@ cd "$(dirname "$0")/.."
 reference_frames="${1:-64}"
 reference_rays="${2:-16}"
 build="${3:-build}"
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-view=(--scene builtin --width 512 --height 384 --camera -0.10,0.36,0.32,0.04,0,-0.05,42 --exposure 0.3)
+source scripts/readme-view.sh
+view=("${readme_view[@]}")
 "$build/bin/caustics-sponza" "${view[@]}" --frames 32 --out "$out/filtered.png" > /dev/null 2>&1
 "$build/bin/caustics-sponza" "${view[@]}" --rays-per-texel "$reference_rays" --accumulate "$reference_frames" \
     --out "$out/reference.png" > /dev/null 2>&1

@@ -9,9 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 reference_frames="${1:-192}"
 build="${2:-build}"
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-view=(--scene builtin --width 512 --height 384 --camera -0.10,0.36,0.32,0.04,0,-0.05,42 --exposure 0.3)
+source scripts/readme-view.sh
+view=("${readme_view[@]}")
 speckle() {
     oiiotool "$1" --cut 140x170+0+160 --ch R,G,B --dup --median 3x3 --sub --clamp:min=0 --printstats 2>&1 |
         awk '/Stats Avg/ { print $3; exit }'
