@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli_numbers.h"
+#include "settings_fields.h"
 
 namespace caustics::sample {
 namespace {
@@ -104,6 +105,8 @@ const char* cliUsage() {
            ) + sampleControlsUsage() + animationUsage() + std::string(
            "  --reference             also render the CPU reference light tracer (to FILE.reference.exr)\n"
            "  --reference-photons N   photons per light for --reference\n"
+           "  --set FIELD=VALUE       any CausticsSettings field by name (repeatable; e.g. atrousIterations=0,\n"
+           "                          filterPoolTiles=4096): the viewer's `set` names and values, applied last\n"
            "  --validation            enable Vulkan validation layers\n"
            "  --window                interactive viewer (GLFW + Dear ImGui; README lists its controls)\n"
            "  --script FILE           drive the viewer from FILE, one command per line (docs/viewer.md)\n");
@@ -125,7 +128,7 @@ bool takesValue(const std::string& a) {
     static const char* const kValueOptions[] = {
         "--scene", "--asset-root", "--sponza", "--backend", "--out", "--graph-dot", "--aov", "--camera", "--width", "--height",
         "--frames", "--map-resolution", "--max-stored-hits", "--max-depth", "--rays-per-texel", "--exposure",
-        "--reference-photons", "--script", "--filter-second-type"};
+        "--reference-photons", "--script", "--filter-second-type", "--set"};
     for (const char* known : kValueOptions)
         if (a == known) return true;
     return false;
@@ -183,6 +186,14 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
             if (value != "apart" && value != "merged")
                 return makeError("--filter-second-type: expected apart or merged, got '" + value + "'");
             o.filterSecondTypeApart = value == "apart";
+        }
+        else if (a == "--set") {
+            const size_t eq = value.find('=');
+            if (eq == std::string::npos || eq == 0)
+                return makeError("--set: expected FIELD=VALUE (a CausticsSettings field, e.g. atrousIterations=0), got '" + value + "'");
+            CausticsSettings probe;   // the name and the value's form checked now; ranges by validate()
+            CAUSTICS_CHECK(setSettingsField(probe, value.substr(0, eq), value.substr(eq + 1)));
+            o.settingFields.emplace_back(value.substr(0, eq), value.substr(eq + 1));
         }
         else if (a == "--aov") { CAUSTICS_TRY(o.aov, parseAov(value)); }
         else if (a == "--camera") { CAUSTICS_TRY(o.camera, parseCamera(value)); }

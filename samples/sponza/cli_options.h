@@ -3,6 +3,7 @@
 // a bad option yields an error naming the option and the accepted range.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -52,6 +53,9 @@ struct CliOptions {
     float exposure = 1.0f;
     SampleControls controls;              // --seed, --accumulate, --sphere-* (sample_controls.h)
     AnimationOptions animation;           // --animate, --animate-speed, --animate-frames (animation_options.h)
+    // --set FIELD=VALUE (repeatable): any CausticsSettings field by its C++ name (settings_fields.h), applied
+    // after the options above, in order; the viewer's `set` command takes the same names and values.
+    std::vector<std::pair<std::string, std::string>> settingFields;
     bool validation = false;
     bool help = false;
 };

@@ -10,6 +10,7 @@
 #include "animation_render.h"
 #include "caustics/caustics_module.h"
 #include "cli_options.h"
+#include "settings_fields.h"
 #include "frame_budget.h"
 #include "finite_output.h"
 #include "frame_renderer.h"
@@ -59,6 +60,7 @@ CausticsSettings settingsFromOptions(const sample::CliOptions& o) {
     s.sphereRadiusPolicy = o.controls.sphereRadiusPolicy == sample::SphereRadiusChoice::World
                                ? SphereRadiusPolicy::FixedWorld
                                : SphereRadiusPolicy::PixelFootprint;
+    for (const auto& [field, value] : o.settingFields) (void)sample::setSettingsField(s, field, value);   // checked when parsed
     if (o.controls.accumulate > 0) s.filter = false;  // --accumulate averages the unfiltered estimate
     return s;
 }

@@ -82,10 +82,26 @@ TEST(SampleControls, RefusesCombinationsThatCannotWork) {
     expectRefused({"--accumulate", "4", "--window"}, "cannot be used with --window");
 }
 
+// --set FIELD=VALUE: any CausticsSettings field by its name, kept in order for main to apply last; a
+// name that is no field, a value of the wrong form or text without '=' is refused naming it.
+TEST(SampleControls, SetTakesAnySettingsFieldByName) {
+    auto r = parse({"--set", "atrousIterations=0", "--set", "filterPoolTiles=4096", "--set", "atrousIterations=2"});
+    ASSERT_TRUE(r.ok()) << r.message();
+    ASSERT_EQ(r->settingFields.size(), 3u);
+    EXPECT_EQ(r->settingFields[0], (std::pair<std::string, std::string>{"atrousIterations", "0"}));
+    EXPECT_EQ(r->settingFields[1], (std::pair<std::string, std::string>{"filterPoolTiles", "4096"}));
+    EXPECT_EQ(r->settingFields[2].second, "2");
+    expectRefused({"--set", "atrous=1"}, "unknown CausticsSettings field 'atrous'");
+    expectRefused({"--set", "atrousIterations=two"}, "atrousIterations");
+    expectRefused({"--set", "atrousIterations"}, "expected FIELD=VALUE");
+    expectRefused({"--set", "=1"}, "expected FIELD=VALUE");
+    expectRefused({"--set"}, "--set: missing value");
+}
+
 TEST(SampleControls, UsageListsTheControls) {
     std::string usage = cliUsage();
     for (const char* option : {"--seed", "--accumulate", "--sphere-radius-policy", "--sphere-radius-scale",
-                               "--sphere-world-radius", "--reference", "--window"})
+                               "--sphere-world-radius", "--reference", "--window", "--set"})
         EXPECT_NE(usage.find(option), std::string::npos) << option;
 }
 
