@@ -263,7 +263,7 @@ void temporalThread(uint group, uint2 local) {
                 if (!filterInside(q, size.x, size.y)) continue;
                 int2 ht = temporalHistoryTexel(q);
                 if (ht.x < 0) continue;
-                // The colour with the guide, before the tests on the guide (as in temporalHistoryRejected).
+                // The colour with the guide, before the tests on the guide (as in temporalHistoryVerdict).
                 FilterGuide hg = filterUnpackGuide(CAUSTICS_TEXEL(historyGuides, ht).xy);
                 float4 history = CAUSTICS_TEXEL(historyColor, ht) * params.historyScale;
                 if (!stillView && !temporalGuidesAgree(hg, id, clip.w, tolerance, n)) continue;
