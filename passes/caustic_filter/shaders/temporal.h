@@ -7,7 +7,7 @@
 // history length n (a sample count, capped at maxHistory) makes the blend 1/n: until the cap the result
 // is the plain mean of every frame that saw the surface point, then an exponential average with weight
 // 1/maxHistory. The luminance moments accumulate the same way for the variance estimate. A history that
-// this frame's photons contradict (temporalHistoryRejected: the caustic moved) is dropped. Dispatched
+// this frame's photons contradict (temporalHistoryVerdict: the caustic moved) is dropped. Dispatched
 // over the tile list; a history texel exists only where last frame's slot map gave its tile a pool
 // tile. The history is ping-ponged (docs/caustics.md "History and guides"): this pass reads last frame's
 // pool and writes this frame's (the result before any spatial pass, and its guides), and, once per
