@@ -87,7 +87,7 @@ int runMemoryMode(const BenchOptions& o) {
         uint64_t module[4] = {0, 0, 0, 0}, persistent = 0, peak = 0, host = 0;
         const uint32_t startPool = settings.filterPoolTiles;
         for (int run = 3; run >= 0; --run) {
-            const int filter = run == 2;
+            const bool reported = run == 2;   // the filter-on run whose entries and peak are printed
             settings.filter = run >= 2;
             settings.causticsEnabled = run > 0;
             settings.filterPoolTiles = run == 3 ? CausticsSettings::kMaxFilterPoolTiles : startPool;   // clamped to the view's tiles
@@ -98,7 +98,7 @@ int runMemoryMode(const BenchOptions& o) {
             if (!report) return fail(report.message());
             module[run] = moduleFrameBytes(*report);
             if (run == 1 && size[0] == o.width && size[1] == o.height) detail.push_back(*report);
-            if (filter) {
+            if (reported) {
                 host = hostSceneBytes(*report);
                 for (const MemoryEntry& e : *report) {
                     if (e.kind == MemoryKind::FramePeak) peak += e.bytes;

@@ -191,9 +191,10 @@ Result<CliOptions> parseCliOptions(const std::vector<std::string>& args) {
             const size_t eq = value.find('=');
             if (eq == std::string::npos || eq == 0)
                 return makeError("--set: expected FIELD=VALUE (a CausticsSettings field, e.g. atrousIterations=0), got '" + value + "'");
+            std::string field = value.substr(0, eq), fieldValue = value.substr(eq + 1);
             CausticsSettings probe;   // the name and the value's form checked now; ranges by validate()
-            CAUSTICS_CHECK(setSettingsField(probe, value.substr(0, eq), value.substr(eq + 1)));
-            o.settingFields.emplace_back(value.substr(0, eq), value.substr(eq + 1));
+            CAUSTICS_CHECK(setSettingsField(probe, field, fieldValue));
+            o.settingFields.emplace_back(std::move(field), std::move(fieldValue));
         }
         else if (a == "--aov") { CAUSTICS_TRY(o.aov, parseAov(value)); }
         else if (a == "--camera") { CAUSTICS_TRY(o.camera, parseCamera(value)); }

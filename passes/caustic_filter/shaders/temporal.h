@@ -37,7 +37,7 @@ struct TemporalParams {
 };
 CAUSTICS_CONST uint kTemporalConfirmNone = 0u;       // the first type alone
 CAUSTICS_CONST uint kTemporalConfirmEvery = 1u;      // the second type's own run
-CAUSTICS_CONST uint kTemporalConfirmSpecular = 2u;   // both types merged: the specular pixels (specularIndex)
+CAUSTICS_CONST uint kTemporalConfirmSpecular = 2u;   // both types merged: the specular pixels (gOptics)
 CAUSTICS_CONST float kTemporalRejectDeviations = 3.0f;
 CAUSTICS_CONST float kTemporalTrustedHistory = 4.0f;
 // A second-type guide whose motion is under this (pixels) shows a still view (temporal_thread.h).
